@@ -1,0 +1,29 @@
+# fivax -- five-axis postprocessor in Tcl. Targets: test, demo, bench.
+TCLSH ?= tclsh
+DEMO_MACHINE ?= machines/hh-tilt45.tcl
+DEMO_CL ?= tests/data/demo-5ax.cls
+
+.PHONY: all deps test demo bench clean
+
+all: test
+
+# Installs tcllib (Debian package) when Tcl cannot load it.
+deps:
+	@echo 'package require cmdline; package require tcltest 2.5' | $(TCLSH) >/dev/null 2>&1 || \
+	  { echo "installing tcllib"; \
+	    (apt-get install -y tcllib || (apt-get update && apt-get install -y tcllib)) >/dev/null; }
+	@echo 'package require cmdline' | $(TCLSH) >/dev/null
+
+test: deps
+	$(TCLSH) tests/all.tcl
+
+demo: deps
+	@mkdir -p out
+	$(TCLSH) tools/replay.tcl -machine $(DEMO_MACHINE) -o out/demo.nc $(DEMO_CL)
+	@echo "NC program written to out/demo.nc"
+
+bench: deps
+	$(TCLSH) tools/bench.tcl
+
+clean:
+	rm -rf out tests/tmp

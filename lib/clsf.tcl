@@ -1,0 +1,640 @@
+# clsf.tcl --
+#	Streaming reader for CLSF / APT CL files (NX CLSF_STANDARD, Creo,
+#	SolidWorks CAM, Makino FFCAM). Reads one logical record at a time with
+#	gets and returns it as a dict; file text is data and is never evaluated.
+#
+#	Every record dict has kind, file, line (first physical line) and the
+#	kind's fields; see ::fivax::clsf::parse. PAINT records are skipped.
+#	Errors are {FIVAX CLSF <detail>} with the message "FILE:LINE: MAJOR: what":
+#	  OPEN    the file or channel cannot be read
+#	  HANDLE  unknown or closed reader handle
+#	  NUMBER  malformed or non-finite number, or non-integer where one is needed
+#	  COUNT   wrong number of numbers for the record
+#	  AXIS    a direction whose length differs from 1 by more than 1e-3
+#	  WORD    missing, unknown or misplaced minor word
+
+namespace eval ::fivax::clsf {
+    namespace export open openChannel next close parse
+    namespace ensemble create
+    # Per-handle state, one array per field, keyed by handle.
+    variable Chan
+    variable Name
+    variable Line
+    variable Own
+    variable Counter 0
+}
+
+# ::fivax::clsf::open --
+#	Returns a reader handle on the CL file at path (closed by close).
+#	Errors: {FIVAX CLSF OPEN} "PATH: cannot open: REASON".
+proc ::fivax::clsf::open {path} {
+    if {[file isdirectory $path]} {
+        ::fivax::Fail CLSF OPEN "$path: cannot open: is a directory"
+    }
+    try {
+        set chan [::open $path r]
+    } trap {POSIX} {msg opts} {
+        ::fivax::Fail CLSF OPEN \
+            "$path: cannot open: [lindex [dict get $opts -errorcode] end]"
+    } on error {msg} {
+        ::fivax::Fail CLSF OPEN "$path: cannot open: $msg"
+    }
+    chan configure $chan -translation auto -encoding utf-8 -buffersize 65536
+    return [NewHandle $chan $path 1]
+}
+
+# ::fivax::clsf::openChannel --
+#	Returns a reader handle on the open channel chan; name is the file name
+#	used in records and messages. close leaves chan open.
+proc ::fivax::clsf::openChannel {chan name} {
+    if {$chan ni [chan names]} {
+        ::fivax::Fail CLSF OPEN "$name: cannot open: no channel named \"$chan\""
+    }
+    return [NewHandle $chan $name 0]
+}
+
+# ::fivax::clsf::NewHandle -- Returns a new handle reading chan, named name.
+proc ::fivax::clsf::NewHandle {chan name own} {
+    variable Chan
+    variable Name
+    variable Line
+    variable Own
+    variable Counter
+    set h clsf[incr Counter]
+    set Chan($h) $chan
+    set Name($h) $name
+    set Line($h) 0
+    set Own($h) $own
+    return $h
+}
+
+# ::fivax::clsf::close --
+#	Forgets the handle h; closes its channel only when open opened it.
+proc ::fivax::clsf::close {h} {
+    variable Chan
+    variable Name
+    variable Line
+    variable Own
+    if {![info exists Chan($h)]} {
+        ::fivax::Fail CLSF HANDLE "unknown CLSF reader handle \"$h\""
+    }
+    set chan $Chan($h)
+    set own $Own($h)
+    unset Chan($h) Name($h) Line($h) Own($h)
+    if {$own} {::close $chan}
+    return
+}
+
+# ::fivax::clsf::next --
+#	Returns the next record dict read from handle h, or {} at end of file.
+#	Joins "$" continuations, drops "$$" comments, blank lines and PAINT.
+#	After an error the handle stays usable: the bad record is consumed.
+proc ::fivax::clsf::next {h} {
+    variable Chan
+    variable Name
+    variable Line
+    if {![info exists Chan($h)]} {
+        ::fivax::Fail CLSF HANDLE "unknown CLSF reader handle \"$h\""
+    }
+    set chan $Chan($h)
+    set n $Line($h)
+    while {[gets $chan text] >= 0} {
+        set first [incr n]
+        if {[string first "\$" $text] >= 0} {
+            # A single trailing $ continues the record (comments included).
+            set text [string trimright $text]
+            while {[string index $text end] eq "\$"
+                    && [string index $text end-1] ne "\$"} {
+                set text [string range $text 0 end-1]
+                if {[gets $chan more] < 0} {break}
+                incr n
+                append text " " [string trimright $more]
+            }
+            set c [string first "\$\$" $text]
+            if {$c >= 0} {set text [string range $text 0 [expr {$c - 1}]]}
+        }
+        set text [string trim $text]
+        if {$text eq ""} {continue}
+        set Line($h) $n
+        set rec [parse $text $Name($h) $first]
+        if {[dict size $rec]} {return $rec}
+    }
+    set Line($h) $n
+    return {}
+}
+
+# ::fivax::clsf::parse --
+#	Returns the record dict for one logical record text (joined, without
+#	comments) found at file:line, or {} for PAINT. Never evaluates text.
+proc ::fivax::clsf::parse {text file line} {
+    set slash [string first / $text]
+    if {$slash >= 0} {
+        set major [string toupper [string trim [string range $text 0 [expr {$slash - 1}]]]]
+        set rest [string range $text [expr {$slash + 1}] end]
+    } else {
+        set major [string toupper [string trim $text]]
+        set rest ""
+    }
+    if {![string is wordchar $major]} {set major [regsub -all {\s+} $major " "]}
+    switch -exact -- $major {
+        GOTO - FROM - GOHOME {
+            # Fast path: plain NX tokens need no trimming.
+            set toks [split $rest ,]
+            if {![string is graph $rest]} {
+                set toks [lmap t $toks {string trim $t}]
+            }
+            set cnt [llength $toks]
+            if {$cnt != 3 && $cnt != 6} {
+                if {[string trim $rest] eq ""} {set cnt 0}
+                ::fivax::Fail CLSF COUNT \
+                    "$file:$line: $major: expected 3 or 6 numbers, got $cnt"
+            }
+            lassign $toks a b c i j k
+            set x [::fivax::parseReal $a]
+            if {$x eq ""} {BadNumber $a $file $line $major}
+            set y [::fivax::parseReal $b]
+            if {$y eq ""} {BadNumber $b $file $line $major}
+            set z [::fivax::parseReal $c]
+            if {$z eq ""} {BadNumber $c $file $line $major}
+            set axis {}
+            if {$cnt == 6} {set axis [Axis $i $j $k $file $line $major "tool axis"]}
+            return [dict create kind $major file $file line $line \
+                        point [list $x $y $z] axis $axis]
+        }
+        PAINT       {return {}}
+        RAPID       {return [ParseRapid $rest $file $line]}
+        CIRCLE      {return [ParseCircle $rest $file $line]}
+        FEDRAT      {return [ParseFedrat $rest $file $line]}
+        CUTCOM      {return [ParseCutcom $rest $file $line]}
+        PPRINT - INSERT - PARTNO {
+            return [dict create kind $major file $file line $line \
+                        text [string trim $rest]]
+        }
+        {TOOL PATH} {return [ParseToolPath $rest $file $line]}
+        TLDATA      {return [ParseTldata $rest $file $line]}
+        CUTTER      {return [ParseCutter $rest $file $line]}
+        MSYS        {return [ParseMsys $rest $file $line]}
+        LOAD - LOADTL {return [ParseLoad $major $rest $file $line]}
+        SELECT      {return [ParseSelect $rest $file $line]}
+        SPINDL      {return [ParseSpindl $rest $file $line]}
+        COOLNT      {return [ParseCoolnt $rest $file $line]}
+        TLAXIS      {return [ParseTlaxis $rest $file $line]}
+        END-OF-PATH {return [dict create kind END_OF_PATH file $file line $line]}
+        STOP - OPSTOP - FINI - END {
+            return [dict create kind $major file $file line $line]
+        }
+        DELAY       {return [ParseDelay $rest $file $line]}
+        CYCLE       {return [ParseCycle $rest $file $line]}
+        UNITS - UNIT {return [ParseUnits $major $rest $file $line]}
+        MULTAX      {return [ParseMultax $rest $file $line]}
+        default     {return [ParseOther $major $text $rest $file $line]}
+    }
+}
+
+# ::fivax::clsf::Tokens -- Returns the trimmed comma-separated tokens of rest.
+proc ::fivax::clsf::Tokens {rest} {
+    if {[string trim $rest] eq ""} {return {}}
+    lmap t [split $rest ,] {string trim $t}
+}
+
+# ::fivax::clsf::Quote -- Returns tok in single quotes, cut to 40 characters.
+proc ::fivax::clsf::Quote {tok} {
+    if {[string length $tok] > 40} {set tok "[string range $tok 0 36]..."}
+    return '$tok'
+}
+
+# ::fivax::clsf::BadNumber -- Raises {FIVAX CLSF NUMBER} for token tok.
+proc ::fivax::clsf::BadNumber {tok file line major} {
+    ::fivax::Fail CLSF NUMBER "$file:$line: $major: [Quote $tok] is not a number"
+}
+
+# ::fivax::clsf::Num -- Returns token tok as a double, or raises NUMBER.
+proc ::fivax::clsf::Num {tok file line major} {
+    set v [::fivax::parseReal $tok]
+    if {$v eq ""} {BadNumber $tok $file $line $major}
+    return $v
+}
+
+# ::fivax::clsf::Int --
+#	Returns the integer in token tok (2, 2.0 or 2.), or raises NUMBER.
+proc ::fivax::clsf::Int {tok file line major} {
+    set v [Num $tok $file $line $major]
+    if {$v != floor($v) || abs($v) >= 2147483648.0} {
+        ::fivax::Fail CLSF NUMBER \
+            "$file:$line: $major: [Quote $tok] is not an integer"
+    }
+    return [expr {int($v)}]
+}
+
+# ::fivax::clsf::Nums -- Returns the list of doubles in the token list toks.
+proc ::fivax::clsf::Nums {toks file line major} {
+    lmap t $toks {Num $t $file $line $major}
+}
+
+# ::fivax::clsf::Axis --
+#	Returns {i j k} from the tokens i j k, normalised; raises AXIS when the
+#	length differs from 1 by more than 1e-3 (label names it in the message).
+proc ::fivax::clsf::Axis {i j k file line major label} {
+    set u [Num $i $file $line $major]
+    set v [Num $j $file $line $major]
+    set w [Num $k $file $line $major]
+    set len [expr {sqrt($u * $u + $v * $v + $w * $w)}]
+    if {!(abs($len - 1.0) <= 1e-3)} {
+        ::fivax::Fail CLSF AXIS \
+            "$file:$line: $major: $label ($i,$j,$k) is not a unit vector"
+    }
+    if {$len != 1.0} {
+        return [list [expr {$u / $len}] [expr {$v / $len}] [expr {$w / $len}]]
+    }
+    return [list $u $v $w]
+}
+
+# ::fivax::clsf::Words --
+#	Returns a flat list of {N double} / {W UPPERWORD} pairs for the tokens
+#	of rest. A token that starts like a number must be one (NUMBER).
+proc ::fivax::clsf::Words {rest file line major} {
+    set out {}
+    foreach t [Tokens $rest] {
+        set v [::fivax::parseReal $t]
+        if {$v ne ""} {
+            lappend out N $v
+        } elseif {[string match {[-+.0-9]*} $t]} {
+            BadNumber $t $file $line $major
+        } else {
+            lappend out W [string toupper $t]
+        }
+    }
+    return $out
+}
+
+# ::fivax::clsf::BadWord -- Raises {FIVAX CLSF WORD} for word w.
+proc ::fivax::clsf::BadWord {w file line major} {
+    ::fivax::Fail CLSF WORD "$file:$line: $major: unexpected word [Quote $w]"
+}
+
+# ::fivax::clsf::ParseRapid -- Returns a RAPID record; RAPID/ takes no arguments.
+proc ::fivax::clsf::ParseRapid {rest file line} {
+    if {[string trim $rest] ne ""} {
+        ::fivax::Fail CLSF WORD \
+            "$file:$line: RAPID: unexpected arguments [Quote [string trim $rest]]"
+    }
+    dict create kind RAPID file $file line $line
+}
+
+# ::fivax::clsf::ParseCircle --
+#	Returns a CIRCLE record: center, axis, radius ("" with 6 numbers),
+#	numbers, times, and tolerance intol tool_diameter tool_radius with 11+.
+proc ::fivax::clsf::ParseCircle {rest file line} {
+    set nums {}
+    set raw {}
+    set times 0
+    set toks [Tokens $rest]
+    for {set p 0} {$p < [llength $toks]} {incr p} {
+        set t [lindex $toks $p]
+        set v [::fivax::parseReal $t]
+        if {$v ne ""} {
+            lappend nums $v
+            lappend raw $t
+        } elseif {[string toupper $t] eq "TIMES"} {
+            incr p
+            if {$p >= [llength $toks]} {
+                ::fivax::Fail CLSF COUNT "$file:$line: CIRCLE: TIMES needs a number"
+            }
+            set times [Int [lindex $toks $p] $file $line CIRCLE]
+        } elseif {[string match {[-+.0-9]*} $t]} {
+            BadNumber $t $file $line CIRCLE
+        } else {
+            BadWord $t $file $line CIRCLE
+        }
+    }
+    set cnt [llength $nums]
+    if {$cnt < 6} {
+        ::fivax::Fail CLSF COUNT \
+            "$file:$line: CIRCLE: expected at least 6 numbers, got $cnt"
+    }
+    lassign $raw - - - i j k
+    set rec [dict create kind CIRCLE file $file line $line \
+                 center [lrange $nums 0 2] \
+                 axis [Axis $i $j $k $file $line CIRCLE axis] \
+                 radius [expr {$cnt > 6 ? [lindex $nums 6] : ""}] \
+                 numbers $nums times $times]
+    if {$cnt >= 11} {
+        lassign [lrange $nums 7 10] tol intol dia rad
+        dict set rec tolerance $tol
+        dict set rec intol $intol
+        dict set rec tool_diameter $dia
+        dict set rec tool_radius $rad
+    }
+    return $rec
+}
+
+# ::fivax::clsf::ParseFedrat --
+#	Returns a FEDRAT record: value and unit (the raw word MMPM IPM MMPR IPR
+#	PERMIN PERREV, or "" when only a number is given).
+proc ::fivax::clsf::ParseFedrat {rest file line} {
+    set vals {}
+    set unit ""
+    foreach {t v} [Words $rest $file $line FEDRAT] {
+        if {$t eq "N"} {
+            lappend vals $v
+        } elseif {$v in {MMPM IPM MMPR IPR PERMIN PERREV} && $unit eq ""} {
+            set unit $v
+        } else {
+            BadWord $v $file $line FEDRAT
+        }
+    }
+    if {[llength $vals] != 1} {
+        ::fivax::Fail CLSF COUNT \
+            "$file:$line: FEDRAT: expected 1 number, got [llength $vals]"
+    }
+    dict create kind FEDRAT file $file line $line value [lindex $vals 0] unit $unit
+}
+
+# ::fivax::clsf::ParseCutcom --
+#	Returns a CUTCOM record: mode LEFT|RIGHT|ON|OFF, plane, register.
+proc ::fivax::clsf::ParseCutcom {rest file line} {
+    set mode ""
+    set plane ""
+    set reg ""
+    foreach {t v} [Words $rest $file $line CUTCOM] {
+        if {$t eq "N"} {
+            if {$reg ne ""} {
+                ::fivax::Fail CLSF COUNT "$file:$line: CUTCOM: more than one register"
+            }
+            set reg [Int $v $file $line CUTCOM]
+        } elseif {$v in {LEFT RIGHT ON OFF} && $mode eq ""} {
+            set mode $v
+        } elseif {$v in {XYPLAN YZPLAN ZXPLAN} && $plane eq ""} {
+            set plane $v
+        } else {
+            BadWord $v $file $line CUTCOM
+        }
+    }
+    if {$mode eq ""} {
+        ::fivax::Fail CLSF WORD "$file:$line: CUTCOM: expected LEFT, RIGHT, ON or OFF"
+    }
+    dict create kind CUTCOM file $file line $line mode $mode plane $plane register $reg
+}
+
+# ::fivax::clsf::ParseToolPath --
+#	Returns a TOOLPATH record from TOOL PATH/name,TOOL,tool (names as written).
+proc ::fivax::clsf::ParseToolPath {rest file line} {
+    set toks [Tokens $rest]
+    set tool ""
+    set p [lsearch -exact [lmap t [lrange $toks 1 end] {string toupper $t}] TOOL]
+    if {$p >= 0} {set tool [lindex $toks [expr {$p + 2}]]}
+    dict create kind TOOLPATH file $file line $line name [lindex $toks 0] tool $tool
+}
+
+# ::fivax::clsf::ParseTldata --
+#	Returns a TLDATA record: type MILL|DRILL, numbers and the named fields
+#	(MILL 5, 7 or 10 numbers; DRILL[,MILL] 5 numbers).
+proc ::fivax::clsf::ParseTldata {rest file line} {
+    set toks [Tokens $rest]
+    set type [string toupper [lindex $toks 0]]
+    set toks [lrange $toks 1 end]
+    switch -exact -- $type {
+        MILL {
+            set names {diameter corner1_radius length taper_angle tip_angle
+                x_corner1 y_corner1 corner2_radius x_corner2 y_corner2}
+            set allowed {5 7 10}
+        }
+        DRILL {
+            if {[string toupper [lindex $toks 0]] eq "MILL"} {set toks [lrange $toks 1 end]}
+            set names {diameter corner1_radius length tip_angle flute_length}
+            set allowed {5}
+        }
+        default {
+            ::fivax::Fail CLSF WORD \
+                "$file:$line: TLDATA: unsupported tool type [Quote $type]"
+        }
+    }
+    set nums [Nums $toks $file $line TLDATA]
+    set cnt [llength $nums]
+    if {$cnt ni $allowed} {
+        set want [expr {$type eq "MILL" ? "5, 7 or 10" : "5"}]
+        ::fivax::Fail CLSF COUNT \
+            "$file:$line: TLDATA: expected $want numbers for $type, got $cnt"
+    }
+    set rec [dict create kind TLDATA file $file line $line type $type numbers $nums]
+    foreach key [lrange $names 0 [expr {$cnt - 1}]] v $nums {
+        dict set rec $key $v
+    }
+    return $rec
+}
+
+# ::fivax::clsf::ParseCutter --
+#	Returns a CUTTER record: diameter, corner1_radius (0 if absent), numbers.
+proc ::fivax::clsf::ParseCutter {rest file line} {
+    set nums [Nums [Tokens $rest] $file $line CUTTER]
+    if {[llength $nums] < 1} {
+        ::fivax::Fail CLSF COUNT "$file:$line: CUTTER: expected at least 1 number, got 0"
+    }
+    set r [expr {[llength $nums] > 1 ? [lindex $nums 1] : 0.0}]
+    dict create kind CUTTER file $file line $line \
+        diameter [lindex $nums 0] corner1_radius $r numbers $nums
+}
+
+# ::fivax::clsf::ParseMsys --
+#	Returns an MSYS record: origin, and unit xaxis and yaxis (normalised).
+proc ::fivax::clsf::ParseMsys {rest file line} {
+    set toks [Tokens $rest]
+    set nums [Nums $toks $file $line MSYS]
+    if {[llength $nums] != 9} {
+        ::fivax::Fail CLSF COUNT \
+            "$file:$line: MSYS: expected 9 numbers, got [llength $nums]"
+    }
+    lassign $toks - - - x1 x2 x3 y1 y2 y3
+    dict create kind MSYS file $file line $line origin [lrange $nums 0 2] \
+        xaxis [Axis $x1 $x2 $x3 $file $line MSYS "x axis"] \
+        yaxis [Axis $y1 $y2 $y3 $file $line MSYS "y axis"]
+}
+
+# ::fivax::clsf::ParseLoad --
+#	Returns a LOAD record (tool, adjust) from LOAD/TOOL,n[,ADJUST,m] or
+#	LOADTL/n[,ADJUST,m].
+proc ::fivax::clsf::ParseLoad {major rest file line} {
+    set toks [Tokens $rest]
+    if {$major eq "LOAD"} {
+        if {[string toupper [lindex $toks 0]] ne "TOOL"} {
+            ::fivax::Fail CLSF WORD "$file:$line: LOAD: expected TOOL"
+        }
+        set toks [lrange $toks 1 end]
+    }
+    if {![llength $toks]} {
+        ::fivax::Fail CLSF COUNT "$file:$line: $major: expected a tool number"
+    }
+    set tool [Int [lindex $toks 0] $file $line $major]
+    set adjust ""
+    set toks [lrange $toks 1 end]
+    if {[llength $toks]} {
+        if {[string toupper [lindex $toks 0]] ne "ADJUST"} {
+            BadWord [lindex $toks 0] $file $line $major
+        }
+        if {[llength $toks] != 2} {
+            ::fivax::Fail CLSF COUNT "$file:$line: $major: ADJUST needs one number"
+        }
+        set adjust [Int [lindex $toks 1] $file $line $major]
+    }
+    dict create kind LOAD file $file line $line tool $tool adjust $adjust
+}
+
+# ::fivax::clsf::ParseSelect -- Returns a SELECT record (tool) from SELECT/TOOL,n.
+proc ::fivax::clsf::ParseSelect {rest file line} {
+    set toks [Tokens $rest]
+    if {[string toupper [lindex $toks 0]] ne "TOOL"} {
+        ::fivax::Fail CLSF WORD "$file:$line: SELECT: expected TOOL"
+    }
+    if {[llength $toks] != 2} {
+        ::fivax::Fail CLSF COUNT \
+            "$file:$line: SELECT: expected TOOL and one number, got [llength $toks] tokens"
+    }
+    dict create kind SELECT file $file line $line \
+        tool [Int [lindex $toks 1] $file $line SELECT]
+}
+
+# ::fivax::clsf::ParseSpindl --
+#	Returns a SPINDL record: state ON|OFF, speed, mode RPM|SFM|SMM,
+#	direction CLW|CCLW; words and the speed may come in any order.
+proc ::fivax::clsf::ParseSpindl {rest file line} {
+    set state ON
+    set speed ""
+    set mode RPM
+    set dir ""
+    foreach {t v} [Words $rest $file $line SPINDL] {
+        if {$t eq "N"} {
+            if {$speed ne ""} {
+                ::fivax::Fail CLSF COUNT "$file:$line: SPINDL: more than one speed"
+            }
+            set speed $v
+        } elseif {$v in {ON OFF}} {
+            set state $v
+        } elseif {$v in {RPM SFM SMM}} {
+            set mode $v
+        } elseif {$v in {CLW CCLW}} {
+            set dir $v
+        } else {
+            BadWord $v $file $line SPINDL
+        }
+    }
+    dict create kind SPINDL file $file line $line \
+        state $state speed $speed mode $mode direction $dir
+}
+
+# ::fivax::clsf::ParseCoolnt --
+#	Returns a COOLNT record: mode ON|OFF|FLOOD|MIST|THRU|TAP (OFF wins; a
+#	medium wins over ON).
+proc ::fivax::clsf::ParseCoolnt {rest file line} {
+    set words {}
+    foreach {t v} [Words $rest $file $line COOLNT] {
+        if {$t eq "N" || $v ni {ON OFF FLOOD MIST THRU TAP}} {
+            BadWord $v $file $line COOLNT
+        }
+        lappend words $v
+    }
+    set mode ""
+    foreach v $words {
+        if {$v eq "OFF"} {
+            set mode OFF
+            break
+        }
+        if {$mode eq "" || $mode eq "ON"} {set mode $v}
+    }
+    if {$mode eq ""} {
+        ::fivax::Fail CLSF WORD "$file:$line: COOLNT: expected ON, OFF, FLOOD, MIST, THRU or TAP"
+    }
+    dict create kind COOLNT file $file line $line mode $mode
+}
+
+# ::fivax::clsf::ParseTlaxis -- Returns a TLAXIS record (unit axis) from TLAXIS/i,j,k.
+proc ::fivax::clsf::ParseTlaxis {rest file line} {
+    set toks [Tokens $rest]
+    if {[llength $toks] != 3} {
+        ::fivax::Fail CLSF COUNT \
+            "$file:$line: TLAXIS: expected 3 numbers, got [llength $toks]"
+    }
+    lassign $toks i j k
+    dict create kind TLAXIS file $file line $line \
+        axis [Axis $i $j $k $file $line TLAXIS "tool axis"]
+}
+
+# ::fivax::clsf::ParseDelay --
+#	Returns a DELAY record: value in seconds, or revs for DELAY/REV,n
+#	(the other field is "").
+proc ::fivax::clsf::ParseDelay {rest file line} {
+    set vals {}
+    set rev 0
+    foreach {t v} [Words $rest $file $line DELAY] {
+        if {$t eq "N"} {
+            lappend vals $v
+        } elseif {$v in {REV REVS}} {
+            set rev 1
+        } elseif {$v ni {SEC SECS}} {
+            BadWord $v $file $line DELAY
+        }
+    }
+    if {[llength $vals] != 1} {
+        ::fivax::Fail CLSF COUNT \
+            "$file:$line: DELAY: expected 1 number, got [llength $vals]"
+    }
+    set v [lindex $vals 0]
+    if {$rev} {
+        return [dict create kind DELAY file $file line $line value "" revs $v]
+    }
+    dict create kind DELAY file $file line $line value $v revs ""
+}
+
+# ::fivax::clsf::ParseCycle --
+#	Returns a CYCLE record: type (first word) and args (numbers as doubles,
+#	words uppercased).
+proc ::fivax::clsf::ParseCycle {rest file line} {
+    set items [Words $rest $file $line CYCLE]
+    lassign $items t type
+    if {$t ne "W" || $type eq ""} {
+        ::fivax::Fail CLSF WORD "$file:$line: CYCLE: expected a cycle type"
+    }
+    set args {}
+    foreach {t v} [lrange $items 2 end] {lappend args $v}
+    dict create kind CYCLE file $file line $line type $type args $args
+}
+
+# ::fivax::clsf::ParseUnits -- Returns a UNITS record: value MM|INCH.
+proc ::fivax::clsf::ParseUnits {major rest file line} {
+    set w [string toupper [string trim $rest]]
+    switch -exact -- $w {
+        MM - MILLIMETERS - MILLIMETRES {set v MM}
+        INCH - INCHES - IN {set v INCH}
+        default {
+            ::fivax::Fail CLSF WORD "$file:$line: $major: expected MM or INCHES, got [Quote $w]"
+        }
+    }
+    dict create kind UNITS file $file line $line value $v
+}
+
+# ::fivax::clsf::ParseMultax -- Returns a MULTAX record: state ON|OFF (bare MULTAX is ON).
+proc ::fivax::clsf::ParseMultax {rest file line} {
+    set w [string toupper [string trim $rest]]
+    if {$w eq ""} {set w ON}
+    if {$w ni {ON OFF}} {
+        ::fivax::Fail CLSF WORD "$file:$line: MULTAX: expected ON or OFF, got [Quote $w]"
+    }
+    dict create kind MULTAX file $file line $line state $w
+}
+
+# ::fivax::clsf::ParseOther --
+#	Returns an UNKNOWN record (major, raw trimmed args), or a PPRINT, INSERT
+#	or PARTNO record written APT-style without "/" (PPRINT some text).
+proc ::fivax::clsf::ParseOther {major text rest file line} {
+    set sp [string first " " $major]
+    if {$sp > 0} {
+        set word [string range $major 0 [expr {$sp - 1}]]
+        if {$word in {PPRINT INSERT PARTNO}} {
+            regexp {^\s*\S+\s(.*)$} $text -> tail
+            return [dict create kind $word file $file line $line \
+                        text [string trim $tail]]
+        }
+    }
+    dict create kind UNKNOWN file $file line $line major $major args [Tokens $rest]
+}
+
+## Ready

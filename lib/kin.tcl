@@ -1,0 +1,382 @@
+# kin.tcl --
+#	Forward and inverse kinematics of two-rotary-axis (five-axis) machines:
+#	the generic chain of kinematics.md section 2, an inverse that solves the
+#	orientation with Paden-Kahan subproblem 2 and the position from the
+#	linear position equation, and the closed forms of sections 3-5 as
+#	cross-checks. Angles in radians, lengths in the machine's units.
+#
+#	Conventions (chain = machine dict 'chain', forward order): axis 1 is the
+#	tool-side (tilt) axis, axis 2 the azimuth axis. Joint vectors are
+#	{X Y Z q1 q2}. With R(u, a) the right-hand rotation about unit u and
+#	th_i = s_i q_i (s_i the axis sense), every machine kind satisfies
+#
+#	    t = R(u2, th2) R(u1, th1) Z                                  (O)
+#
+#	head-head:   tip = XYZ + R2(R1(0 - p1) + p1 - p2) + p2
+#	head-table:  P   = R2(XYZ + R1(0 - p1) + p1 - p2) + p2
+#	table-table: P   = R2(R1(XYZ - p1) + p1 - p2) + p2
+#
+#	(table axes: R here is the inverse of the rotation the table gives the
+#	part, so a positive ISO table angle moves the tool positively relative
+#	to the part). u_i, p_i are zero-pose directions and absolute points.
+#	Errors: {FIVAX KIN <DETAIL>}.
+
+namespace eval ::fivax::kin {
+    namespace export model forward orientations position inverse \
+        closedHeadHead closedHeadTable nutatingTilt
+    namespace ensemble create
+
+    # |t x u2| below this (t within ~1e-12 rad of the azimuth axis) is
+    # reported 'singular'; the round-trip error this causes is < 1e-12.
+    variable singularTol 1e-12
+    # Reach margin D = r |u1 x u2| - |d| (see orientations): D < -edgeTol is
+    # unreachable, |D| <= edgeTol is the workspace edge itself (one solution,
+    # g = 0; the two near-coincident roots would differ by ~sqrt(D) in the
+    # angles but only by ~D in the tool axis, so merging them costs < 1e-11).
+    variable edgeTol 1e-12
+    variable pi 3.141592653589793
+}
+
+# ::fivax::kin::model --
+#	Returns the kinematic model of machine (a fivax::machine dict) for one
+#	tool: L = pivot + toolLength ("" = the machine's tool_length), absolute
+#	axis points (head: point + (0,0,L); table: point + tableOffset, default
+#	the machine's table_offset) and precomputed constants for the hot paths.
+#	Errors: {FIVAX KIN VALUE} for a non-numeric tool length or offset.
+proc ::fivax::kin::model {machine toolLength {tableOffset ""}} {
+    if {$toolLength eq ""} {set toolLength [dict get $machine tool_length]}
+    set tl [::fivax::parseReal $toolLength]
+    if {$tl eq ""} {::fivax::Fail KIN VALUE "tool length is not a number: $toolLength"}
+    if {$tableOffset eq ""} {set tableOffset [dict get $machine table_offset]}
+    if {![string is list $tableOffset] || [llength $tableOffset] != 3} {
+        ::fivax::Fail KIN VALUE "table offset is not a list of 3 numbers: $tableOffset"
+    }
+    set off {}
+    foreach c $tableOffset {
+        set v [::fivax::parseReal $c]
+        if {$v eq ""} {::fivax::Fail KIN VALUE "table offset is not a list of 3 numbers: $tableOffset"}
+        lappend off $v
+    }
+    lassign $off ox oy oz
+    set L [expr {[dict get $machine pivot] + $tl}]
+    set m [dict create L $L toolLength $tl tableOffset $off kind [dict get $machine kind]]
+    set names {}
+    set geo {}
+    set i 0
+    foreach ax [dict get $machine chain] {
+        incr i
+        lappend names [dict get $ax name]
+        lassign [dict get $ax dir] ux uy uz
+        lassign [dict get $ax point] px py pz
+        if {[dict get $ax side] eq "head"} {
+            set p [list $px $py [expr {$pz + $L}]]
+        } else {
+            set p [list [expr {$px + $ox}] [expr {$py + $oy}] [expr {$pz + $oz}]]
+        }
+        dict set m u$i [list $ux $uy $uz]
+        dict set m p$i $p
+        dict set m s$i [dict get $ax sense]
+        dict set m side$i [dict get $ax side]
+        lappend geo $ux $uy $uz {*}$p [expr {double([dict get $ax sense])}]
+    }
+    dict set m names $names
+    set kc [dict get {headhead 0 headtable 1 tabletable 2} [dict get $machine kind]]
+    dict set m geo [linsert $geo 0 $kc]
+
+    # Orientation constants for (O): w = u1.u2, n = u1 x u2, nn = |n|^2,
+    # k1 = u1.Z, m1 = u1 x Z, zp = Z - k1 u1 (Z projected off u1).
+    lassign [dict get $m u1] x1 y1 z1
+    lassign [dict get $m u2] x2 y2 z2
+    set w [expr {$x1 * $x2 + $y1 * $y2 + $z1 * $z2}]
+    set nx [expr {$y1 * $z2 - $z1 * $y2}]
+    set ny [expr {$z1 * $x2 - $x1 * $z2}]
+    set nz [expr {$x1 * $y2 - $y1 * $x2}]
+    set nn [expr {$nx * $nx + $ny * $ny + $nz * $nz}]
+    if {$nn < 1e-18} {::fivax::Fail KIN GEOMETRY "axes [join $names { and }] are parallel"}
+    set k1 $z1
+    set dP [expr {-$x1 * $x2 - $y1 * $y2 + $z1 * (1.0 - $z2)}]
+    set dM [expr {$x1 * $x2 + $y1 * $y2 + $z1 * (1.0 + $z2)}]
+    set m1x $y1
+    set m1y [expr {-$x1}]
+    set zpx [expr {-$k1 * $x1}]
+    set zpy [expr {-$k1 * $y1}]
+    set zpz [expr {1.0 - $k1 * $z1}]
+    if {$zpx * $zpx + $zpy * $zpy + $zpz * $zpz < 1e-18} {
+        ::fivax::Fail KIN GEOMETRY "axis [lindex $names 0] is parallel to the tool axis"
+    }
+    set m1u2 [expr {$m1x * $x2 + $m1y * $y2}]
+    set m1n [expr {$m1x * $nx + $m1y * $ny}]
+    set zpu2 [expr {$zpx * $x2 + $zpy * $y2 + $zpz * $z2}]
+    set zpn [expr {$zpx * $nx + $zpy * $ny + $zpz * $nz}]
+    dict set m ori [list $x1 $y1 $z1 $x2 $y2 $z2 $nx $ny $nz $w $nn [expr {sqrt($nn)}] \
+                        $k1 $dP $dM $m1u2 $m1n $zpu2 $zpn \
+                        [expr {double([dict get $m s1])}] [expr {double([dict get $m s2])}]]
+    return $m
+}
+
+# ::fivax::kin::forward --
+#	Returns {P t}: tool tip and unit tool axis in the workpiece frame for the
+#	joint vector {X Y Z q1 q2} (kinematics.md section 2).
+proc ::fivax::kin::forward {model joints} {
+    lassign $joints X Y Z q1 q2
+    lassign [dict get $model geo] kc ux1 uy1 uz1 px1 py1 pz1 s1 ux2 uy2 uz2 px2 py2 pz2 s2
+    set a [expr {$s1 * $q1}]
+    set c1 [expr {cos($a)}]
+    set n1 [expr {sin($a)}]
+    set a [expr {$s2 * $q2}]
+    set c2 [expr {cos($a)}]
+    set n2 [expr {sin($a)}]
+    # v: the point entering axis 1, relative to p1
+    if {$kc == 2} {
+        set vx [expr {$X - $px1}]; set vy [expr {$Y - $py1}]; set vz [expr {$Z - $pz1}]
+    } else {
+        set vx [expr {-$px1}]; set vy [expr {-$py1}]; set vz [expr {-$pz1}]
+    }
+    # R1 (v) + p1 - p2, Rodrigues
+    set k [expr {(1.0 - $c1) * ($ux1 * $vx + $uy1 * $vy + $uz1 * $vz)}]
+    set wx [expr {$vx * $c1 + ($uy1 * $vz - $uz1 * $vy) * $n1 + $ux1 * $k + $px1 - $px2}]
+    set wy [expr {$vy * $c1 + ($uz1 * $vx - $ux1 * $vz) * $n1 + $uy1 * $k + $py1 - $py2}]
+    set wz [expr {$vz * $c1 + ($ux1 * $vy - $uy1 * $vx) * $n1 + $uz1 * $k + $pz1 - $pz2}]
+    if {$kc == 1} {
+        set wx [expr {$wx + $X}]; set wy [expr {$wy + $Y}]; set wz [expr {$wz + $Z}]
+    }
+    # R1 Z
+    set k [expr {(1.0 - $c1) * $uz1}]
+    set tx [expr {$uy1 * $n1 + $ux1 * $k}]
+    set ty [expr {-$ux1 * $n1 + $uy1 * $k}]
+    set tz [expr {$c1 + $uz1 * $k}]
+    # R2 (w) + p2, R2 t
+    set k [expr {(1.0 - $c2) * ($ux2 * $wx + $uy2 * $wy + $uz2 * $wz)}]
+    set Px [expr {$wx * $c2 + ($uy2 * $wz - $uz2 * $wy) * $n2 + $ux2 * $k + $px2}]
+    set Py [expr {$wy * $c2 + ($uz2 * $wx - $ux2 * $wz) * $n2 + $uy2 * $k + $py2}]
+    set Pz [expr {$wz * $c2 + ($ux2 * $wy - $uy2 * $wx) * $n2 + $uz2 * $k + $pz2}]
+    if {$kc == 0} {
+        set Px [expr {$Px + $X}]; set Py [expr {$Py + $Y}]; set Pz [expr {$Pz + $Z}]
+    }
+    set k [expr {(1.0 - $c2) * ($ux2 * $tx + $uy2 * $ty + $uz2 * $tz)}]
+    list [list $Px $Py $Pz] \
+        [list [expr {$tx * $c2 + ($uy2 * $tz - $uz2 * $ty) * $n2 + $ux2 * $k}] \
+             [expr {$ty * $c2 + ($uz2 * $tx - $ux2 * $tz) * $n2 + $uy2 * $k}] \
+             [expr {$tz * $c2 + ($ux2 * $ty - $uy2 * $tx) * $n2 + $uz2 * $k}]]
+}
+
+# ::fivax::kin::orientations --
+#	Returns {status sols} for the tool axis t (normalised here): 'regular'
+#	with one or two {q1 q2} (radians in (-pi, pi]), 'singular' (t along the
+#	azimuth axis u2, q2 free) with {{q1 0.0}}, or 'unreachable' with {}.
+#	Errors: {FIVAX KIN ZERO} for a zero t.
+#
+#	Solves (O) as Paden-Kahan subproblem 2: c = R1 Z = R2^-1 t lies on the
+#	circle of Z about u1 and on the circle of t about u2, so with h = u2.t,
+#	c = a u1 + b u2 + g (u1 x u2),  a = d/nn,  b = (h - w k1)/nn,
+#	d = k1 - w h,  nn = 1 - w^2 = |u1 x u2|^2,  g = +-sqrt(G)/nn,
+#	G = (1 - h^2) nn - d^2   (the Gram determinant of u1, u2, c).
+#	Near t = +-u2 everything is taken from r = |t x u2| (1 - h^2 = r^2, and
+#	d = (k1 - w) + w r^2/(1 + h) for h > 0), so G, g and the azimuth stay
+#	accurate to a few ulps even 1e-12 rad from the singular direction.
+#	Reachable iff D = r sqrt(nn) - |d| >= 0 (G = D (r sqrt(nn) + |d|));
+#	|D| <= edgeTol is taken as the edge itself (g = 0, one solution).
+#	Then th1 = angle from Z to c about u1 and th2 = angle from c to t about
+#	u2 (subproblem 1, written with precomputed dot products), q_i = s_i th_i.
+proc ::fivax::kin::orientations {model t} {
+    variable singularTol
+    variable edgeTol
+    variable pi
+    lassign $t tx ty tz
+    set tn [expr {sqrt($tx * $tx + $ty * $ty + $tz * $tz)}]
+    if {$tn == 0.0} {::fivax::Fail KIN ZERO "tool axis is a zero vector"}
+    if {$tn != 1.0} {
+        set tx [expr {$tx / $tn}]; set ty [expr {$ty / $tn}]; set tz [expr {$tz / $tn}]
+    }
+    lassign [dict get $model ori] x1 y1 z1 x2 y2 z2 nx ny nz w nn sqnn \
+        k1 dP dM m1u2 m1n zpu2 zpn s1 s2
+    set h [expr {$x2 * $tx + $y2 * $ty + $z2 * $tz}]
+    # e = t x u2, r = |e| = |t_perp|
+    set ex [expr {$ty * $z2 - $tz * $y2}]
+    set ey [expr {$tz * $x2 - $tx * $z2}]
+    set ez [expr {$tx * $y2 - $ty * $x2}]
+    set r2 [expr {$ex * $ex + $ey * $ey + $ez * $ez}]
+    set r [expr {sqrt($r2)}]
+    if {$h > 0.0} {
+        set d [expr {$dP + $w * $r2 / (1.0 + $h)}]
+    } else {
+        set d [expr {$dM - $w * $r2 / (1.0 - $h)}]
+    }
+    set D [expr {$r * $sqnn - abs($d)}]
+    if {$D < -$edgeTol} {return {unreachable {}}}
+    set b [expr {($h - $w * $k1) / $nn}]
+    if {$r < $singularTol} {
+        set q [expr {$s1 * atan2($b * $m1u2, $b * $zpu2) + 0.0}]
+        if {$q <= -$pi} {set q [expr {$q + 2.0 * $pi}]}
+        return [list singular [list [list $q 0.0]]]
+    }
+    set a [expr {$d / $nn}]
+    if {$D > $edgeTol} {
+        set g [expr {sqrt($D * ($r * $sqnn + abs($d))) / $nn}]
+    } else {
+        set g 0.0
+    }
+    # c.e = a u1.e + g n.e;  c_perp.t_perp = a u1.t_perp + g n.t
+    set ue [expr {$x1 * $ex + $y1 * $ey + $z1 * $ez}]
+    set ne [expr {$nx * $ex + $ny * $ey + $nz * $ez}]
+    set ut [expr {$x1 * ($tx - $h * $x2) + $y1 * ($ty - $h * $y2) + $z1 * ($tz - $h * $z2)}]
+    set nt [expr {$nx * $tx + $ny * $ty + $nz * $tz}]
+    set sols {}
+    foreach sg [expr {$g > 0.0 ? {1.0 -1.0} : {1.0}}] {
+        set gg [expr {$sg * $g}]
+        set q1 [expr {$s1 * atan2($b * $m1u2 + $gg * $m1n, $b * $zpu2 + $gg * $zpn) + 0.0}]
+        set q2 [expr {$s2 * atan2($a * $ue + $gg * $ne, $a * $ut + $gg * $nt) + 0.0}]
+        if {$q1 <= -$pi} {set q1 [expr {$q1 + 2.0 * $pi}]}
+        if {$q2 <= -$pi} {set q2 [expr {$q2 + 2.0 * $pi}]}
+        lappend sols [list $q1 $q2]
+    }
+    list regular $sols
+}
+
+# ::fivax::kin::position --
+#	Returns {X Y Z}: the linear axes that put the tool tip at P (workpiece
+#	frame) with rotaries q = {q1 q2}; the forward chain solved for XYZ.
+proc ::fivax::kin::position {model P q} {
+    lassign $P Px Py Pz
+    lassign $q q1 q2
+    lassign [dict get $model geo] kc ux1 uy1 uz1 px1 py1 pz1 s1 ux2 uy2 uz2 px2 py2 pz2 s2
+    set a [expr {$s1 * $q1}]
+    set c1 [expr {cos($a)}]
+    set n1 [expr {sin($a)}]
+    set a [expr {$s2 * $q2}]
+    set c2 [expr {cos($a)}]
+    set n2 [expr {sin($a)}]
+    if {$kc == 0} {
+        # XYZ = P - (R2 (R1 (-p1) + p1 - p2) + p2)
+        set k [expr {-(1.0 - $c1) * ($ux1 * $px1 + $uy1 * $py1 + $uz1 * $pz1)}]
+        set wx [expr {-$px1 * $c1 - ($uy1 * $pz1 - $uz1 * $py1) * $n1 + $ux1 * $k + $px1 - $px2}]
+        set wy [expr {-$py1 * $c1 - ($uz1 * $px1 - $ux1 * $pz1) * $n1 + $uy1 * $k + $py1 - $py2}]
+        set wz [expr {-$pz1 * $c1 - ($ux1 * $py1 - $uy1 * $px1) * $n1 + $uz1 * $k + $pz1 - $pz2}]
+        set k [expr {(1.0 - $c2) * ($ux2 * $wx + $uy2 * $wy + $uz2 * $wz)}]
+        return [list \
+            [expr {$Px - ($wx * $c2 + ($uy2 * $wz - $uz2 * $wy) * $n2 + $ux2 * $k + $px2)}] \
+            [expr {$Py - ($wy * $c2 + ($uz2 * $wx - $ux2 * $wz) * $n2 + $uy2 * $k + $py2)}] \
+            [expr {$Pz - ($wz * $c2 + ($ux2 * $wy - $uy2 * $wx) * $n2 + $uz2 * $k + $pz2)}]]
+    }
+    # Undo the table axis 2: v = R2^-1 (P - p2) + p2   (R^-1 = R(u, -a))
+    set vx [expr {$Px - $px2}]; set vy [expr {$Py - $py2}]; set vz [expr {$Pz - $pz2}]
+    set k [expr {(1.0 - $c2) * ($ux2 * $vx + $uy2 * $vy + $uz2 * $vz)}]
+    set mx [expr {$vx * $c2 - ($uy2 * $vz - $uz2 * $vy) * $n2 + $ux2 * $k + $px2}]
+    set my [expr {$vy * $c2 - ($uz2 * $vx - $ux2 * $vz) * $n2 + $uy2 * $k + $py2}]
+    set mz [expr {$vz * $c2 - ($ux2 * $vy - $uy2 * $vx) * $n2 + $uz2 * $k + $pz2}]
+    if {$kc == 1} {
+        # XYZ = m - (R1 (-p1) + p1)
+        set k [expr {-(1.0 - $c1) * ($ux1 * $px1 + $uy1 * $py1 + $uz1 * $pz1)}]
+        return [list \
+            [expr {$mx + $px1 * $c1 + ($uy1 * $pz1 - $uz1 * $py1) * $n1 - $ux1 * $k - $px1}] \
+            [expr {$my + $py1 * $c1 + ($uz1 * $px1 - $ux1 * $pz1) * $n1 - $uy1 * $k - $py1}] \
+            [expr {$mz + $pz1 * $c1 + ($ux1 * $py1 - $uy1 * $px1) * $n1 - $uz1 * $k - $pz1}]]
+    }
+    # Undo the table axis 1: XYZ = R1^-1 (m - p1) + p1
+    set vx [expr {$mx - $px1}]; set vy [expr {$my - $py1}]; set vz [expr {$mz - $pz1}]
+    set k [expr {(1.0 - $c1) * ($ux1 * $vx + $uy1 * $vy + $uz1 * $vz)}]
+    list [expr {$vx * $c1 - ($uy1 * $vz - $uz1 * $vy) * $n1 + $ux1 * $k + $px1}] \
+        [expr {$vy * $c1 - ($uz1 * $vx - $ux1 * $vz) * $n1 + $uy1 * $k + $py1}] \
+        [expr {$vz * $c1 - ($ux1 * $vy - $uy1 * $vx) * $n1 + $uz1 * $k + $pz1}]
+}
+
+# ::fivax::kin::inverse --
+#	Returns every joint vector {X Y Z q1 q2} putting the tip at P with axis t
+#	(one or two; {} when t is unreachable). At a singular t, q2 is azimuth
+#	(default 0.0: callers pass their previous azimuth).
+proc ::fivax::kin::inverse {model P t {azimuth 0.0}} {
+    lassign [orientations $model $t] status sols
+    set out {}
+    foreach q $sols {
+        if {$status eq "singular"} {lset q 1 $azimuth}
+        lappend out [list {*}[position $model $P $q] {*}$q]
+    }
+    return $out
+}
+
+# ::fivax::kin::Wrap -- Returns angle a (radians) wrapped into (-pi, pi].
+proc ::fivax::kin::Wrap {a} {
+    variable pi
+    set a [expr {atan2(sin($a), cos($a)) + 0.0}]
+    if {$a <= -$pi} {set a [expr {$a + 2.0 * $pi}]}
+    return $a
+}
+
+# ::fivax::kin::closedHeadHead --
+#	Returns the {X Y Z B C} (radians) of kinematics.md section 3 for tip P and
+#	unit axis t on a head-head machine with B tilted by alpha (radians),
+#	L = pivot + tool length and offset yH (C sense -1, B sense +1). One
+#	solution when B = 0 (then C = 0) or B = 180 deg, none when
+#	K < -cos(2 alpha).
+proc ::fivax::kin::closedHeadHead {alpha L yH P t} {
+    lassign $P x y z
+    lassign $t I J K
+    set ca [expr {cos($alpha)}]
+    set sa [expr {sin($alpha)}]
+    set cb [expr {($K - $sa * $sa) / ($ca * $ca)}]
+    if {$cb < -1.0 - 1e-12 || $cb > 1.0 + 1e-12} {return {}}
+    set cb [expr {min(1.0, max(-1.0, $cb))}]
+    set B [expr {acos($cb)}]
+    set out {}
+    variable pi
+    foreach Bs [expr {$B > 0.0 && $B < $pi ? [list $B [expr {-$B}]] : [list $B]}] {
+        set p [expr {$ca * sin($Bs)}]
+        set q [expr {0.5 * sin(2.0 * $alpha) * (1.0 - cos($Bs))}]
+        set pq [expr {$p * $p + $q * $q}]
+        if {$pq == 0.0} {
+            set C 0.0
+        } else {
+            set C [expr {atan2(($I * $q - $J * $p) / $pq, ($I * $p + $J * $q) / $pq)}]
+        }
+        set C [Wrap $C]
+        set Bs [Wrap $Bs]
+        lappend out [list \
+            [expr {$x + $yH * $ca * sin($C) + $L * $I}] \
+            [expr {$y - $yH * $ca * (1.0 - cos($C)) + $L * $J}] \
+            [expr {$z - $L * (1.0 - $K)}] $Bs $C]
+    }
+    return $out
+}
+
+# ::fivax::kin::closedHeadTable --
+#	Returns the {X Y Z B C} (radians) of kinematics.md section 4 for tip P and
+#	unit axis t: head B about +Y through (0,0,L) above the tip (sense +1),
+#	table C about +Z through center (default the origin, sense -1).
+proc ::fivax::kin::closedHeadTable {L P t {center {0 0 0}}} {
+    variable pi
+    lassign $P x y z
+    lassign $t I J K
+    lassign $center cx cy cz
+    set B [expr {acos(min(1.0, max(-1.0, $K)))}]
+    if {hypot($I, $J) == 0.0} {
+        set sols [list [list $B 0.0]]
+    } else {
+        set C [expr {atan2(-$J, $I)}]
+        set sols [list [list $B $C] [list [expr {-$B}] [expr {$C + $pi}]]]
+    }
+    set out {}
+    foreach s $sols {
+        lassign $s B C
+        set B [Wrap $B]
+        set C [Wrap $C]
+        set dx [expr {$x - $cx}]
+        set dy [expr {$y - $cy}]
+        lappend out [list \
+            [expr {$cx + $dx * cos($C) - $dy * sin($C) + $L * sin($B)}] \
+            [expr {$cy + $dx * sin($C) + $dy * cos($C)}] \
+            [expr {$z + $L * (cos($B) - 1.0)}] $B $C]
+    }
+    return $out
+}
+
+# ::fivax::kin::nutatingTilt --
+#	Returns phi = acos(2K - 1) (radians), the outer-axis angle of a 45-degree
+#	nutating table for tool-axis component K (kinematics.md section 5).
+#	Errors: {FIVAX KIN UNREACHABLE} for K < 0 (beyond 1e-12).
+proc ::fivax::kin::nutatingTilt {K} {
+    if {![string is double -strict $K]} {::fivax::Fail KIN VALUE "K is not a number: $K"}
+    if {$K < -1e-12} {
+        ::fivax::Fail KIN UNREACHABLE "tool axis K = $K < 0 is out of reach of a 45-degree nutating table"
+    }
+    expr {acos(min(1.0, max(-1.0, 2.0 * $K - 1.0)))}
+}

@@ -1,0 +1,341 @@
+# machine.tcl --
+#	Loads and validates fivax machine files. A machine file is data: a Tcl
+#	list of key/value pairs, read with open/read and checked with
+#	[string is list] and dict access; it is never sourced or evaluated.
+#	Lengths stay in the file's units; angles are turned into radians.
+#
+#	Errors: {FIVAX MACHINE <DETAIL>} with a message "<file>: <what>", where
+#	DETAIL is one of
+#	    NOFILE     the file cannot be read
+#	    NOTLIST    the text (comments removed) is not a valid Tcl list
+#	    ODD        a key/value list of odd length (top level or axis)
+#	    DUPLICATE  a key or an axis name given twice
+#	    UNKNOWN    an unknown key
+#	    MISSING    a required key is absent
+#	    VALUE      a value is malformed or out of range
+#	    AXES       wrong number or arrangement of rotary axes
+#	    GEOMETRY   degenerate axis geometry (parallel axes, tilt along Z)
+
+namespace eval ::fivax::machine {
+    namespace export load parse
+    namespace ensemble create
+
+    # Top-level keys and their defaults ("" default with required = 1).
+    variable topDefaults {
+        name {} description {} units mm family chain alpha 0 y_H 0 pivot 0
+        tool_length 0 table_offset {0 0 0} axes {} controller fanuc output {}
+        clearance 50 safe_z {} feed_min 1 feed_max 20000
+        inverse_time_max 9999 max_swing 180
+    }
+    variable topRequired {name axes}
+    variable axisKeys {side direction point sense min max continuous prefer rollover}
+    # Stand-in for an unlimited continuous axis (radians).
+    variable unlimited 1e300
+}
+
+# ::fivax::machine::load --
+#	Returns the machine dict read from the machine file at path.
+#	Errors: {FIVAX MACHINE NOFILE} and those of parse.
+proc ::fivax::machine::load {path} {
+    if {![file isfile $path] || ![file readable $path]} {
+        ::fivax::Fail MACHINE NOFILE "$path: cannot read machine file"
+    }
+    try {
+        set chan [open $path r]
+        fconfigure $chan -encoding utf-8
+        set text [read $chan]
+    } trap {POSIX} {msg} {
+        ::fivax::Fail MACHINE NOFILE "$path: cannot read machine file: $msg"
+    } finally {
+        if {[info exists chan]} {close $chan}
+    }
+    parse $text $path
+}
+
+# ::fivax::machine::parse --
+#	Returns the machine dict described by text (the contents of a machine
+#	file); sourceName names the text in error messages and in key 'file'.
+proc ::fivax::machine::parse {text sourceName} {
+    variable topDefaults
+    variable topRequired
+    set src $sourceName
+
+    # Whole-line comments: first non-blank character '#'.
+    set kept {}
+    foreach line [split $text \n] {
+        if {[string index [string trimleft $line] 0] ne "#"} {lappend kept $line}
+    }
+    set body [join $kept \n]
+    if {![string is list $body]} {
+        ::fivax::Fail MACHINE NOTLIST "$src: not a valid Tcl list of key/value pairs"
+    }
+    if {[llength $body] % 2} {
+        ::fivax::Fail MACHINE ODD "$src: odd number of words (keys without values)"
+    }
+    set raw [dict create]
+    foreach {key value} $body {
+        if {![dict exists $topDefaults $key]} {
+            ::fivax::Fail MACHINE UNKNOWN "$src: unknown key '$key'"
+        }
+        if {[dict exists $raw $key]} {
+            ::fivax::Fail MACHINE DUPLICATE "$src: key '$key' given twice"
+        }
+        dict set raw $key $value
+    }
+    foreach key $topRequired {
+        if {![dict exists $raw $key]} {
+            ::fivax::Fail MACHINE MISSING "$src: missing key '$key'"
+        }
+    }
+
+    set m [dict create file $sourceName]
+    # name, description, units, family, controller
+    set name [dict get $raw name]
+    if {[string trim $name] eq ""} {
+        ::fivax::Fail MACHINE VALUE "$src: 'name' is empty"
+    }
+    dict set m name $name
+    dict set m description [Get $raw description]
+    dict set m units [Choice $src units [Get $raw units] {mm inch}]
+    set family [Choice $src family [Get $raw family] {headhead chain}]
+    dict set m family $family
+    set controller [Get $raw controller]
+    if {![regexp {^[A-Za-z0-9_.-]+$} $controller]} {
+        ::fivax::Fail MACHINE VALUE "$src: 'controller' is not a single word: $controller"
+    }
+    dict set m controller $controller
+
+    # Head-head only keys.
+    foreach key {alpha y_H} {
+        if {$family ne "headhead" && [dict exists $raw $key]} {
+            ::fivax::Fail MACHINE VALUE "$src: '$key' is only allowed with 'family headhead'"
+        }
+    }
+    set alphaDeg [Real $src alpha [Get $raw alpha]]
+    if {!(abs($alphaDeg) < 90.0)} {
+        ::fivax::Fail MACHINE VALUE "$src: 'alpha' must lie strictly between -90 and 90: $alphaDeg"
+    }
+    set alpha [expr {$alphaDeg * acos(-1.0) / 180.0}]
+    dict set m alpha $alpha
+    set yH [Real $src y_H [Get $raw y_H]]
+    dict set m y_H $yH
+
+    # Plain numbers.
+    dict set m pivot [Real $src pivot [Get $raw pivot]]
+    dict set m tool_length [Real $src tool_length [Get $raw tool_length]]
+    dict set m table_offset [Vector $src table_offset [Get $raw table_offset]]
+    set v [Real $src clearance [Get $raw clearance]]
+    if {$v < 0} {::fivax::Fail MACHINE VALUE "$src: 'clearance' is negative: $v"}
+    dict set m clearance $v
+    set v [Get $raw safe_z]
+    if {$v ne ""} {set v [Real $src safe_z $v]}
+    dict set m safe_z $v
+    foreach key {feed_min feed_max inverse_time_max max_swing} {
+        set v [Real $src $key [Get $raw $key]]
+        if {$v <= 0} {::fivax::Fail MACHINE VALUE "$src: '$key' must be positive: $v"}
+        dict set m $key $v
+    }
+    if {[dict get $m feed_min] > [dict get $m feed_max]} {
+        ::fivax::Fail MACHINE VALUE "$src: 'feed_min' exceeds 'feed_max'"
+    }
+    dict set m max_swing [expr {[dict get $m max_swing] * acos(-1.0) / 180.0}]
+
+    set output [Get $raw output]
+    if {![string is list $output] || [llength $output] % 2} {
+        ::fivax::Fail MACHINE VALUE "$src: 'output' is not a key/value list"
+    }
+    dict set m output [dict create {*}$output]
+
+    # Axes.
+    set axes [ParseAxes $src $family [dict get $raw axes] $alpha $yH]
+    dict set m axes $axes
+    set heads [lmap a $axes {if {[dict get $a side] eq "head"} {set a} else continue}]
+    set tables [lmap a $axes {if {[dict get $a side] eq "table"} {set a} else continue}]
+    dict set m kind [dict get {
+        2,0 headhead 1,1 headtable 0,2 tabletable
+    } "[llength $heads],[llength $tables]"]
+    set chain [concat [lreverse $heads] $tables]
+    dict set m chain $chain
+    CheckGeometry $src $chain
+    return $m
+}
+
+# ::fivax::machine::Get -- Returns raw's value for key, or its default.
+proc ::fivax::machine::Get {raw key} {
+    variable topDefaults
+    if {[dict exists $raw $key]} {return [dict get $raw $key]}
+    dict get $topDefaults $key
+}
+
+# ::fivax::machine::Real -- Returns value as a finite double or fails naming key.
+proc ::fivax::machine::Real {src key value {what ""}} {
+    set v [::fivax::parseReal $value]
+    if {$v eq ""} {
+        ::fivax::Fail MACHINE VALUE "$src: ${what}'$key' is not a number: $value"
+    }
+    return $v
+}
+
+# ::fivax::machine::Choice -- Returns value when it is one of choices, else fails.
+proc ::fivax::machine::Choice {src key value choices {what ""}} {
+    if {$value ni $choices} {
+        ::fivax::Fail MACHINE VALUE \
+            "$src: ${what}'$key' must be one of [join $choices {, }]: $value"
+    }
+    return $value
+}
+
+# ::fivax::machine::Vector -- Returns value as a list of 3 doubles or fails.
+proc ::fivax::machine::Vector {src key value {what ""}} {
+    if {![string is list $value] || [llength $value] != 3} {
+        ::fivax::Fail MACHINE VALUE "$src: ${what}'$key' is not a list of 3 numbers: $value"
+    }
+    lmap c $value {Real $src $key $c $what}
+}
+
+# ::fivax::machine::ParseAxes --
+#	Returns the list of axis dicts (file order) for the axes value; head-head
+#	machines get their directions and points from alpha and yH (radians, mm).
+proc ::fivax::machine::ParseAxes {src family axesText alpha yH} {
+    variable axisKeys
+    variable unlimited
+    if {![string is list $axesText] || [llength $axesText] % 2} {
+        ::fivax::Fail MACHINE ODD "$src: 'axes' is not a list of name/properties pairs"
+    }
+    set names {}
+    set axes {}
+    foreach {name props} $axesText {
+        set what "axis $name: "
+        if {![regexp {^[A-Za-z][A-Za-z0-9_]*$} $name] || [string toupper $name] in {X Y Z}} {
+            ::fivax::Fail MACHINE VALUE "$src: bad axis name '$name'"
+        }
+        if {$name in $names} {
+            ::fivax::Fail MACHINE DUPLICATE "$src: axis '$name' given twice"
+        }
+        lappend names $name
+        if {![string is list $props] || [llength $props] % 2} {
+            ::fivax::Fail MACHINE ODD "$src: ${what}properties are not a key/value list"
+        }
+        set p [dict create]
+        foreach {key value} $props {
+            if {$key ni $axisKeys} {
+                ::fivax::Fail MACHINE UNKNOWN "$src: ${what}unknown key '$key'"
+            }
+            if {[dict exists $p $key]} {
+                ::fivax::Fail MACHINE DUPLICATE "$src: ${what}key '$key' given twice"
+            }
+            dict set p $key $value
+        }
+        foreach key {side sense} {
+            if {![dict exists $p $key]} {
+                ::fivax::Fail MACHINE MISSING "$src: ${what}missing key '$key'"
+            }
+        }
+        set side [Choice $src side [dict get $p side] {head table} $what]
+        set sense [Real $src sense [dict get $p sense] $what]
+        if {$sense != 1.0 && $sense != -1.0} {
+            ::fivax::Fail MACHINE VALUE "$src: ${what}'sense' must be 1 or -1: [dict get $p sense]"
+        }
+        set flags {}
+        foreach key {continuous rollover} {
+            set v 0
+            if {[dict exists $p $key]} {set v [dict get $p $key]}
+            if {$v ni {0 1}} {
+                ::fivax::Fail MACHINE VALUE "$src: ${what}'$key' must be 0 or 1: $v"
+            }
+            dict set flags $key $v
+        }
+        set continuous [dict get $flags continuous]
+        set rollover [dict get $flags rollover]
+        if {$rollover && !$continuous} {
+            ::fivax::Fail MACHINE VALUE "$src: ${what}'rollover 1' needs 'continuous 1'"
+        }
+        set prefer none
+        if {[dict exists $p prefer]} {
+            set prefer [Choice $src prefer [dict get $p prefer] {positive negative none} $what]
+        }
+        set lim {}
+        foreach key {min max} sign {-1 1} {
+            if {[dict exists $p $key]} {
+                dict set lim $key [expr {[Real $src $key [dict get $p $key] $what] \
+                                             * acos(-1.0) / 180.0}]
+            } elseif {$continuous} {
+                dict set lim $key [expr {$sign * $unlimited}]
+            } else {
+                ::fivax::Fail MACHINE MISSING \
+                    "$src: ${what}missing key '$key' (required unless continuous)"
+            }
+        }
+        if {[dict get $lim min] > [dict get $lim max]} {
+            ::fivax::Fail MACHINE VALUE "$src: ${what}'min' exceeds 'max'"
+        }
+        if {$family eq "headhead"} {
+            foreach key {direction point} {
+                if {[dict exists $p $key]} {
+                    ::fivax::Fail MACHINE VALUE \
+                        "$src: ${what}'$key' is not allowed with 'family headhead' (derived from alpha, y_H)"
+                }
+            }
+            set dir {}
+            set point {}
+        } else {
+            if {![dict exists $p direction]} {
+                ::fivax::Fail MACHINE MISSING "$src: ${what}missing key 'direction'"
+            }
+            lassign [Vector $src direction [dict get $p direction] $what] dx dy dz
+            set n [expr {sqrt($dx * $dx + $dy * $dy + $dz * $dz)}]
+            if {$n < 1e-12} {
+                ::fivax::Fail MACHINE VALUE "$src: ${what}'direction' is a zero vector"
+            }
+            set dir [list [expr {$dx / $n}] [expr {$dy / $n}] [expr {$dz / $n}]]
+            set point {0.0 0.0 0.0}
+            if {[dict exists $p point]} {
+                set point [Vector $src point [dict get $p point] $what]
+            }
+        }
+        lappend axes [dict create name $name side $side dir $dir point $point \
+                          sense [expr {int($sense)}] min [dict get $lim min] \
+                          max [dict get $lim max] continuous $continuous \
+                          prefer [dict get {positive 1 negative -1 none 0} $prefer] \
+                          rollover $rollover]
+    }
+    if {[llength $axes] != 2} {
+        ::fivax::Fail MACHINE AXES \
+            "$src: a five-axis machine has exactly two rotary axes, not [llength $axes]"
+    }
+    if {$family eq "headhead"} {
+        foreach a $axes {
+            if {[dict get $a side] ne "head"} {
+                ::fivax::Fail MACHINE AXES \
+                    "$src: 'family headhead' needs two head axes; [dict get $a name] is on the table"
+            }
+        }
+        set ca [expr {cos($alpha)}]
+        set sa [expr {sin($alpha)}]
+        lset axes 0 [dict replace [lindex $axes 0] dir {0.0 0.0 1.0} \
+                         point [list 0.0 [expr {$yH * $ca}] 0.0]]
+        lset axes 1 [dict replace [lindex $axes 1] dir [list 0.0 $ca $sa] \
+                         point {0.0 0.0 0.0}]
+    }
+    return $axes
+}
+
+# ::fivax::machine::CheckGeometry --
+#	Fails unless the chain (forward order) can orient the tool: the tilt axis
+#	must not be parallel to the tool (Z) nor to the azimuth axis.
+proc ::fivax::machine::CheckGeometry {src chain} {
+    lassign $chain a1 a2
+    lassign [dict get $a1 dir] x1 y1 z1
+    lassign [dict get $a2 dir] x2 y2 z2
+    if {hypot($x1, $y1) < 1e-9} {
+        ::fivax::Fail MACHINE GEOMETRY \
+            "$src: axis [dict get $a1 name]: direction is parallel to the tool axis"
+    }
+    set cx [expr {$y1 * $z2 - $z1 * $y2}]
+    set cy [expr {$z1 * $x2 - $x1 * $z2}]
+    set cz [expr {$x1 * $y2 - $y1 * $x2}]
+    if {sqrt($cx * $cx + $cy * $cy + $cz * $cz) < 1e-9} {
+        ::fivax::Fail MACHINE GEOMETRY \
+            "$src: axes [dict get $a1 name] and [dict get $a2 name] are parallel"
+    }
+}

@@ -1,0 +1,16 @@
+# hh-paper -- head-head fork head (alpha 0), the head-head paper's worked
+# example: L = 433.75 = pivot with a zero tool length, y_H = -5.5 mm
+# (kinematics.md sections 3 and 9). Lengths in mm, angles in degrees.
+name        hh-paper
+description {Head-head fork head, paper geometry (alpha 0, y_H -5.5)}
+units       mm
+family      headhead
+alpha       0
+y_H         -5.5
+pivot       433.75
+tool_length 0
+axes {
+    # outer axis first: C carries B
+    C {side head sense -1 min 0 max 360 continuous 0 prefer none}
+    B {side head sense 1 min -100 max 100 continuous 0 prefer positive}
+}

@@ -1,0 +1,14 @@
+# hh-tilt45 -- head-head, B tilted 45 deg (nutating head); paper geometry.
+# Reachable tool axes: K >= -cos(2 alpha) = 0.
+name        hh-tilt45
+description {Head-head, B tilted 45 deg}
+units       mm
+family      headhead
+alpha       45
+y_H         12.929
+pivot       390
+tool_length 0
+axes {
+    C {side head sense -1 min 0 max 360 continuous 0 prefer none}
+    B {side head sense 1 min 0 max 180 continuous 0 prefer positive}
+}

@@ -1,0 +1,13 @@
+# ht-b45 -- head-table: B on the head at 45 deg in the YZ plane through the
+# pivot point, continuous C on the table about +Z through the origin.
+name        ht-b45
+description {Head B at 45 deg, continuous table C}
+units       mm
+family      chain
+pivot       300
+tool_length 0
+axes {
+    B {side head direction {0 0.70710678118654757 0.70710678118654757} point {0 0 0}
+       sense 1 min 0 max 180 prefer none}
+    C {side table direction {0 0 1} point {0 0 0} sense 1 continuous 1}
+}

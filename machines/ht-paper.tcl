@@ -1,0 +1,13 @@
+# ht-paper -- head-table: B on the head about +Y through the pivot point,
+# C on the table about +Z through the origin (the head-table paper's
+# machine, kinematics.md section 4: pivot 125 + TLDATA tool length 275).
+name        ht-paper
+description {Head B, table C (paper geometry, pivot 125)}
+units       mm
+family      chain
+pivot       125
+tool_length 0
+axes {
+    B {side head direction {0 1 0} point {0 0 0} sense 1 min -90 max 90 prefer negative}
+    C {side table direction {0 0 1} point {0 0 0} sense -1 min 0 max 360 continuous 0 prefer none}
+}

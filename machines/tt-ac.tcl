@@ -1,0 +1,11 @@
+# tt-ac -- A-C trunnion table: A (outer) about +X through (0, 0, -59.793),
+# C (carried by A) about +Z through the origin. XYZ do not depend on the
+# tool length on a table-table machine.
+name        tt-ac
+description {A-C trunnion table}
+units       mm
+family      chain
+axes {
+    A {side table direction {1 0 0} point {0 0 -59.793} sense 1 min -110 max 110}
+    C {side table direction {0 0 1} point {0 0 0} sense 1 continuous 1}
+}

@@ -1,0 +1,12 @@
+# tt-bc -- B-C trunnion table (worked example of the machine file format):
+# B (outer) about +Y through (0, 0, -80), C (carried by B) about +Z through
+# the table reference point; ISO senses; C turns without limits.
+name        tt-bc
+description {B-C trunnion table, B -120..30, continuous C}
+units       mm
+family      chain
+table_offset {0 0 0}
+axes {
+    B {side table direction {0 1 0} point {0 0 -80} sense 1 min -120 max 30}
+    C {side table direction {0 0 1} point {0 0 0} sense 1 continuous 1}
+}

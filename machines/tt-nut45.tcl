@@ -1,0 +1,12 @@
+# tt-nut45 -- nutating table: B (outer) at 45 deg in the YZ plane through
+# (0, 0, -120), C (carried by B) about +Z through the origin.
+# Reachable tool axes: K >= 0 (cos B = 2K - 1).
+name        tt-nut45
+description {Nutating 45 deg table, B-C}
+units       mm
+family      chain
+axes {
+    B {side table direction {0 0.70710678118654757 0.70710678118654757}
+       point {0 0 -120} sense 1 min 0 max 180}
+    C {side table direction {0 0 1} point {0 0 0} sense 1 continuous 1}
+}
