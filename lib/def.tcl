@@ -426,8 +426,11 @@ proc ::fivax::def::ParseFormatting {d open linesVar} {
     }
 }
 
-# ::fivax::def::ParseAddress -- Parses one ADDRESS body; returns its dict.
+# ::fivax::def::ParseAddress --
+#	Parses one ADDRESS body (entries KEY value, any layout); returns its dict.
 proc ::fivax::def::ParseAddress {aname open} {
+    variable Toks
+    variable Pos
     set a [dict create format "" force off leader $aname leader_expr "" \
         trailer "" trailer_expr "" max "" max_action "" min "" min_action "" \
         zero_format "" incremental off]
@@ -437,62 +440,51 @@ proc ::fivax::def::ParseAddress {aname open} {
         lassign $t type key line
         if {$type eq "RB"} break
         if {$type ne "WORD"} {Error $line "unexpected \"$key\" in ADDRESS $aname"}
-        set rest [SameLine $line]
+        if {$key ni {FORMAT ZERO_FORMAT FORCE INCREMENTAL MAX MIN LEADER TRAILER}} {
+            Error $line "unknown ADDRESS entry \"$key\" in $aname"
+        }
+        lassign [Next] vtype v vline
+        if {$vtype ni {WORD STR}} {Error $line "$key wants a value"}
         switch -- $key {
             FORMAT - ZERO_FORMAT {
-                if {[llength $rest] != 1} {Error $line "$key wants one format name"}
-                dict set a [string tolower $key] [lindex $rest 0]
+                dict set a [string tolower $key] $v
             }
             FORCE {
-                set v [string tolower [lindex $rest 0]]
-                if {[llength $rest] != 1 || $v ni {off always once}} {
-                    Error $line "FORCE wants Off, Always or Once"
-                }
+                set v [string tolower $v]
+                if {$v ni {off always once}} {Error $line "FORCE wants Off, Always or Once"}
                 dict set a force $v
             }
             INCREMENTAL {
-                set v [string tolower [lindex $rest 0]]
-                if {[llength $rest] != 1 || $v ni {on off}} {Error $line "INCREMENTAL wants ON or OFF"}
+                set v [string tolower $v]
+                if {$v ni {on off}} {Error $line "INCREMENTAL wants ON or OFF"}
                 dict set a incremental $v
             }
             MAX - MIN {
-                if {[llength $rest] < 1 || [llength $rest] > 2} {
-                    Error $line "$key wants a number and ?Abort|Warning|Truncate?"
-                }
-                lassign $rest num act
-                set v [::fivax::parseReal $num]
-                if {$v eq ""} {Error $line "$key: bad number \"$num\""}
-                if {$act ne "" && [string tolower $act] ni {abort warning truncate}} {
-                    Error $line "$key: bad action \"$act\": must be Abort, Warning or Truncate"
-                }
+                if {[::fivax::parseReal $v] eq ""} {Error $line "$key: bad number \"$v\""}
                 set k [string tolower $key]
-                dict set a $k $num
+                dict set a $k $v
+                set act ""
+                lassign [Peek] ntype ntext
+                if {$ntype eq "WORD" && [string tolower $ntext] in {abort warning truncate}} {
+                    set act $ntext
+                    Next
+                }
                 dict set a ${k}_action $act
             }
             LEADER - TRAILER {
+                # the raw token decides: a bracketed value is an expression
                 set k [string tolower $key]
-                # the raw token decides: a bracketed leader is an expression
-                variable Toks
-                variable Pos
-                if {[llength $rest] == 0} {
-                    dict set a $k ""
-                } elseif {[llength $rest] != 1} {
-                    Error $line "$key wants one string or \[expression\]"
-                } else {
-                    lassign [lindex $Toks [expr {$Pos - 1}]] ttype ttext
-                    if {$ttype eq "WORD" && [string index $ttext 0] eq "\["} {
-                        if {[BracketEnd $ttext 0 $line] != [string length $ttext] - 1} {
-                            Error $line "$key: text after \[expression\]"
-                        }
-                        dict set a $k ""
-                        dict set a ${k}_expr [string range $ttext 1 end-1]
-                    } else {
-                        dict set a $k $ttext
-                        dict set a ${k}_expr ""
+                if {$vtype eq "WORD" && [string index $v 0] eq "\["} {
+                    if {[BracketEnd $v 0 $vline] != [string length $v] - 1} {
+                        Error $vline "$key: text after \[expression\]"
                     }
+                    dict set a $k ""
+                    dict set a ${k}_expr [string range $v 1 end-1]
+                } else {
+                    dict set a $k $v
+                    dict set a ${k}_expr ""
                 }
             }
-            default {Error $line "unknown ADDRESS entry \"$key\" in $aname"}
         }
     }
     if {[dict get $a format] eq ""} {Error $open "ADDRESS $aname has no FORMAT"}

@@ -237,7 +237,5 @@ proc MOM_end_of_program {} {
     foreach line [fivax::nc::footer $fivax(nc)] {fivax_out $line}
     set fivax_summary [dict merge [fivax::motion::stats $fivax(plan)] \
         [fivax::verify::summary $fivax(verify)]]
-    dict for {key value} $fivax_summary {
-        MOM_output_to_listing_device "fivax: $key $value"
-    }
+    MOM_output_to_listing_device "fivax summary: $fivax_summary"
 }

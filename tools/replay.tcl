@@ -79,6 +79,11 @@ proc ::replay::Settings {opts} {
         msys [dict get $opts msys] feed_mode $feed
 }
 
+# ::replay::Listing -- Prints a listing line of the post on stderr (the summary is printed apart).
+proc ::replay::Listing {text} {
+    if {![string match "fivax summary:*" $text]} {puts stderr $text}
+}
+
 # ::replay::Post --
 #	Runs the post on clsf, writing NC text to channel chan. Returns the
 #	runtime statistics merged with the post's summary.
@@ -86,7 +91,7 @@ proc ::replay::Post {settings clsf chan} {
     variable ::root
     set rt [::fivax::mom::create -post [file join $root post fivax.tcl] \
         -def [file join $root post fivax.def] -channel $chan \
-        -listing [list puts stderr] \
+        -listing ::replay::Listing \
         -globals [dict create fivax_settings $settings] \
         -autopath [list [file join $root lib] [info library]]]
     try {
