@@ -135,7 +135,7 @@ proc ::fivax::def::DictOr {d key dflt} {
 # ::fivax::def::Error -- Raises {FIVAX DEF SYNTAX} "name:line: msg".
 proc ::fivax::def::Error {line msg} {
     variable Name
-    return -code error -level 2 -errorcode {FIVAX DEF SYNTAX} "$Name:$line: $msg"
+    ::fivax::Fail DEF SYNTAX "$Name:$line: $msg"
 }
 
 # ::fivax::def::Lex --

@@ -61,7 +61,7 @@ proc ::fivax::mom::create {args} {
         event "" records 0 blocks 0 warnings 0 events 0 pathOpen 0
         headerPending 0 rapid 0 circle {} cycle {} axis {0.0 0.0 1.0}
         point {} tool {} toolKey {} prevToolKey {} toolChanged 0 firstMove 1
-        toolNames {} programStarted 0 handlers {} msysPending 0
+        toolNames {} handlers {} msysPending 0 unknown {}
     }
     set S(nc) [::fivax::nc::create -sequence 0]
     if {$S(def) ne ""} {
@@ -137,7 +137,6 @@ proc ::fivax::mom::Start {h path} {
         mom_logname fivax mom_ug_version fivax-replay mom_output_unit MM \
         mom_part_unit MM mom_machine_mode MILL mom_cl_file $path]
     Fire $h start_of_program
-    set S(programStarted) 1
 }
 
 # ::fivax::mom::Finish -- Closes an open path and fires MOM_end_of_program.
@@ -146,6 +145,7 @@ proc ::fivax::mom::Finish {h} {
     FlushHeader $h
     if {$S(pathOpen)} {EndPath $h}
     Fire $h end_of_program
+    UnknownTotals $h
 }
 
 # ::fivax::mom::Globals -- Sets the globals of a flat name/value list in the post interp.
@@ -185,13 +185,6 @@ proc ::fivax::mom::Fire {h event} {
         set S(event) $previous
     }
     return 1
-}
-
-# ::fivax::mom::Warn -- Counts a warning and writes it to the listing device.
-proc ::fivax::mom::Warn {h msg} {
-    upvar #0 $h S
-    incr S(warnings)
-    Listing $h "warning: $msg"
 }
 
 # ::fivax::mom::Listing -- Passes one line to the listing command, if any.
@@ -469,12 +462,17 @@ proc ::fivax::mom::SetPosition {h point axis} {
     Array $h mom_pos $point
 }
 
-# ::fivax::mom::Circle -- Sets mom_arc_* from a CIRCLE record (NX: clockwise about the vector).
+# ::fivax::mom::Circle --
+#	Sets mom_arc_* from a CIRCLE record. mom_arc_direction is the turning
+#	sense about mom_arc_axis: NX-style CIRCLEs (11 numbers: NX, Makino)
+#	turn clockwise about their vector, the short APT form (6 or 7 numbers:
+#	Creo, SolidWorks CAM) counter-clockwise (nx-conventions.md 5.4).
 proc ::fivax::mom::Circle {h rec} {
     Array $h mom_arc_center [dict get $rec center]
     Array $h mom_arc_axis [dict get $rec axis]
+    set sense [expr {[llength [dict get $rec numbers]] >= 11 ? "CLW" : "CCLW"}]
     set pairs [list mom_arc_radius [dict get $rec radius] mom_arc_times \
-        [dict get $rec times] mom_arc_direction CLW]
+        [dict get $rec times] mom_arc_direction $sense]
     foreach key {tolerance intol tool_diameter tool_radius} {
         if {[dict exists $rec $key]} {
             lappend pairs mom_arc_[string map {intol intol_fraction} $key] [dict get $rec $key]
@@ -591,19 +589,37 @@ proc ::fivax::mom::Cycle {h rec} {
     }
     Globals $h [concat [list mom_cycle_type $type mom_cycle_event $event] $pairs]
     set S(cycle) [dict create event $event]
-    Fire $h $event
+    if {![Fire $h $event]} {
+        incr S(warnings)
+        Listing $h "warning: [Where $rec]: the post has no MOM_$event: the holes of this cycle are not output"
+    }
 }
 
 # ::fivax::mom::Unknown --
-#	An unknown record: a warning with FILE:LINE, and MOM_<word> fired if
-#	the post defines it (the word is used only if it is a plain name).
+#	An unknown record: a warning with FILE:LINE (the first five of each
+#	word; Finish counts the rest), and MOM_<word> fired if the post
+#	defines it (the word is used only if it is a plain name).
 proc ::fivax::mom::Unknown {h rec} {
     upvar #0 $h S
     set major [dict get $rec major]
     set word [string tolower [string map {- _ " " _} $major]]
     Globals $h [list mom_record_major $major mom_record_args [dict get $rec args]]
     if {[regexp {^[a-z][a-z0-9_]*$} $word] && [Fire $h $word]} return
-    Warn $h "[Where $rec]: unknown record '$major' ignored"
+    incr S(warnings)
+    dict incr S(unknown) $major
+    if {[dict get $S(unknown) $major] <= 5} {
+        Listing $h "warning: [Where $rec]: unknown record '$major' ignored"
+    }
+}
+
+# ::fivax::mom::UnknownTotals -- Lists how many unknown records of each word went unreported.
+proc ::fivax::mom::UnknownTotals {h} {
+    upvar #0 $h S
+    dict for {major count} $S(unknown) {
+        if {$count > 5} {
+            Listing $h "warning: [expr {$count - 5}] more '$major' records ignored ($count in all)"
+        }
+    }
 }
 
 # ---- MOM_* commands (called from the post interpreter) --------------------
@@ -663,7 +679,7 @@ proc ::fivax::mom::Cmd_do_template {h name {mode ""}} {
         }
         lappend words $addr $value
     }
-    set line [::fivax::nc::blockWords $S(nc) $words]
+    set line [::fivax::nc::block $S(nc) $words]
     if {$mode ne "CREATE"} {Write $h $line}
     return $line
 }

@@ -13,7 +13,7 @@
 #	          integer (value rounded), s = string, a = NX &abcdef code;
 #	    spec  the printf string, or the parsed &abcdef fields.
 #	The mode is derived from Flags($h,$name) = {base forceAlways
-#	suppressAlways once} by Recompute, so the hot path reads one element.
+#	suppressAlways once} by Mode, so the hot path reads one element.
 #
 #	Note: this namespace defines a command called "format"; every core
 #	format call in here is written ::format.
@@ -21,7 +21,7 @@
 namespace eval ::fivax::nc {
     namespace export create configure address format block line comment \
         force suppress sequence resetSequence value reset header footer \
-        delete
+        delete blockWords
     namespace ensemble create -prefixes 0
 
     variable Count 0
@@ -74,6 +74,15 @@ proc ::fivax::nc::create {args} {
     set Cfg($h) $cfg
     set Names($h) {}
     Apply $h $cfg
+    # The nameless address: literal text (template "strings"), always written.
+    variable Addr
+    variable Flags
+    variable Last
+    variable Val
+    set Addr($h,) {w s {} {} {}}
+    set Flags($h,) {always 0 0 {}}
+    set Last($h,) ""
+    set Val($h,) ""
     dict with cfg {}
     set dec "%.${-decimals}f"
     set ang "%.${-angleDecimals}f"
@@ -211,6 +220,7 @@ proc ::fivax::nc::format {F value} {
 #	prefixed with N<seq> when numbering is on; "" when every word was left
 #	out (unchanged modal word, suppressed, or empty value). Only words
 #	written update the modal memory.
+#	The empty name "" stands for literal text, written as it is every time.
 #	Errors: {FIVAX NC ADDRESS} for an undefined address name.
 proc ::fivax::nc::block {h words} {
     variable Addr
@@ -280,6 +290,11 @@ proc ::fivax::nc::block {h words} {
         return [SeqWord $h]$Sep($h)[join $out $Sep($h)]$Eol($h)
     }
     return [join $out $Sep($h)]$Eol($h)
+}
+
+# ::fivax::nc::blockWords -- Same as block (the name lib/mom.tcl calls).
+proc ::fivax::nc::blockWords {h words} {
+    tailcall block $h $words
 }
 
 # ::fivax::nc::line --
@@ -509,6 +524,7 @@ proc ::fivax::nc::SeqWord {h} {
     set next [expr {$n + $SeqIncr($h)}]
     set SeqNext($h) [expr {$next > $SeqMax($h) ? $SeqStart($h) : $next}]
     lassign $Addr($h,N) mode kind spec leader trailer
+    if {$kind eq "d"} {return $leader[::format $spec $n]$trailer}
     return $leader[FormatValue $kind $spec $n]$trailer
 }
 
@@ -568,6 +584,13 @@ proc ::fivax::nc::ParseFormat {F} {
     if {[regexp {^&([-+_])([0_])([0-9])([._])([0-9])([0_])$} $F -> a b c d e f]} {
         set r [list a [list [expr {$a eq "+"}] [expr {$b eq "0"}] $c \
             [expr {$d eq "."}] $e [expr {$f eq "0"}] $F]]
+        # Codes that printf writes the same take the fast printf path.
+        set sign [expr {$a eq "+" ? "+" : ""}]
+        if {$b ne "0" && $d eq "." && $f eq "0" && $e > 0} {
+            set r [list [expr {$a eq "+" ? "F" : "f"}] "%$sign.${e}f"]
+        } elseif {$b ne "0" && $d ne "." && $e == 0} {
+            set r [list d "%${sign}d"]
+        }
     } elseif {[regexp {^[^%]*%([-+ 0#]*)([0-9]*)(?:\.([0-9]+))?([diouxXfeEgGs])[^%]*$} \
             $F -> flags width prec conv]} {
         switch -- $conv {

@@ -1,5 +1,6 @@
 # toolpath.tcl --
-#	Synthetic five-axis CL data: the example surface S(u,v) of
+#	CL path geometry: circular and helical arcs as points within a chord
+#	tolerance, and synthetic five-axis CL data: the example surface S(u,v) of
 #	kinematics.md section 11, tool tip and axis of a toroidal end mill at a
 #	contact point, a zig-zag raster over S, simple sweep paths that exercise
 #	the rotary axes (winding, the +Z pole), and NX-style CLSF text for them.
@@ -17,7 +18,7 @@
 #	  EMPTY   clsf called with no points
 
 namespace eval ::fivax::toolpath {
-    namespace export surface partials normal torusCL raster sweep clsf
+    namespace export surface partials normal torusCL raster sweep clsf arc
     namespace ensemble create
     variable Pi 3.141592653589793
 }
@@ -26,8 +27,8 @@ namespace eval ::fivax::toolpath {
 #	Returns S(u,v) = (100u - 50, 100v - 50, -80 v (v - 1) p(u) - 28) with
 #	p(u) = 3.55u - 14.8u^2 + 21.1u^3 - 9.9u^4 (kinematics.md section 11).
 proc ::fivax::toolpath::surface {u v} {
-    CheckReal u $u
-    CheckReal v $v
+    set u [Real u $u]
+    set v [Real v $v]
     set p [expr {$u * (3.55 + $u * (-14.8 + $u * (21.1 - 9.9 * $u)))}]
     list [expr {100.0 * $u - 50.0}] [expr {100.0 * $v - 50.0}] \
         [expr {-80.0 * $v * ($v - 1.0) * $p - 28.0}]
@@ -36,8 +37,8 @@ proc ::fivax::toolpath::surface {u v} {
 # ::fivax::toolpath::partials --
 #	Returns {Su Sv}, the analytic partial derivatives dS/du and dS/dv.
 proc ::fivax::toolpath::partials {u v} {
-    CheckReal u $u
-    CheckReal v $v
+    set u [Real u $u]
+    set v [Real v $v]
     lassign [Slopes $u $v] zu zv
     list [list 100.0 0.0 $zu] [list 0.0 100.0 $zv]
 }
@@ -45,8 +46,8 @@ proc ::fivax::toolpath::partials {u v} {
 # ::fivax::toolpath::normal --
 #	Returns the unit normal unit(Su x Sv) of S at (u,v); its z is positive.
 proc ::fivax::toolpath::normal {u v} {
-    CheckReal u $u
-    CheckReal v $v
+    set u [Real u $u]
+    set v [Real v $v]
     lassign [Slopes $u $v] zu zv
     # Su x Sv = (-100 zu, -100 zv, 10000); divide by 100 first.
     set len [expr {sqrt($zu * $zu + $zv * $zv + 10000.0)}]
@@ -83,7 +84,7 @@ proc ::fivax::toolpath::torusCL {cc n tau D r lead tilt} {
     CheckVec cc $cc
     CheckVec n $n
     CheckVec tau $tau
-    foreach name {D r lead tilt} {CheckReal $name [set $name]}
+    foreach name {D r lead tilt} {set $name [Real $name [set $name]]}
     CheckTool $D $r
     if {!(abs($lead) < $Pi / 2.0)} {
         ::fivax::Fail TOOLPATH LEAD "lead must lie inside (-pi/2, pi/2), got $lead"
@@ -390,11 +391,15 @@ proc ::fivax::toolpath::BadValue {name value want} {
     ::fivax::Fail TOOLPATH VALUE "bad value \"$value\" for $name: must be $want"
 }
 
-# ::fivax::toolpath::CheckReal -- Raises VALUE unless x is a finite number.
-proc ::fivax::toolpath::CheckReal {name x} {
-    if {![string is double -strict $x] || !(abs($x) < Inf)} {
+# ::fivax::toolpath::Real --
+#	Returns x as a double (decimal, so 017 is 17.0); raises VALUE unless x
+#	is a finite number.
+proc ::fivax::toolpath::Real {name x} {
+    set v [::fivax::parseReal $x]
+    if {$v eq ""} {
         ::fivax::Fail TOOLPATH VALUE "bad $name \"$x\": must be a finite number"
     }
+    return $v
 }
 
 # ::fivax::toolpath::CheckVec -- Raises VALUE unless v is 3 finite numbers.
@@ -418,3 +423,40 @@ proc ::fivax::toolpath::CheckTool {D r} {
 }
 
 ## Ready
+
+# ::fivax::toolpath::arc --
+#	Returns the points after start up to and including end of an arc about
+#	the line through center along unit axis, turning clockwise (sense -1)
+#	or counter-clockwise (sense 1) about axis, plus turns extra full turns,
+#	with chord error at most tol (mm). Radius and the axial height vary
+#	linearly from start to end (helixes, slightly inconsistent CL data).
+#	start = end is a full circle.
+proc ::fivax::toolpath::arc {start end center axis sense turns tol} {
+    variable Pi
+    set n [::fivax::vec::unit $axis]
+    set hs [::fivax::vec::dot [::fivax::vec::sub $start $center] $n]
+    set he [::fivax::vec::dot [::fivax::vec::sub $end $center] $n]
+    set rs [::fivax::vec::sub [::fivax::vec::sub $start $center] [::fivax::vec::scale $hs $n]]
+    set re [::fivax::vec::sub [::fivax::vec::sub $end $center] [::fivax::vec::scale $he $n]]
+    set r0 [::fivax::vec::norm $rs]
+    set r1 [::fivax::vec::norm $re]
+    if {$r0 < 1e-9 || $r1 < 1e-9} {return [list $end]}
+    # Signed angle from rs to re about n, then taken in the arc's sense.
+    set a [expr {atan2([::fivax::vec::dot [::fivax::vec::cross $rs $re] $n], [::fivax::vec::dot $rs $re])}]
+    set sweep [expr {$sense > 0 ? $a : -$a}]
+    if {$sweep < 1e-9} {set sweep [expr {$sweep + 2.0 * $Pi}]}
+    set sweep [expr {$sweep + 2.0 * $Pi * $turns}]
+    set rmax [expr {max($r0, $r1)}]
+    set step [expr {$tol >= $rmax ? $Pi / 2.0 : 2.0 * acos(1.0 - $tol / $rmax)}]
+    set count [expr {max(1, int(ceil($sweep / $step)))}]
+    set u [::fivax::vec::scale [expr {1.0 / $r0}] $rs]
+    set out {}
+    for {set i 1} {$i < $count} {incr i} {
+        set f [expr {double($i) / $count}]
+        set dir [::fivax::vec::rotate $n [expr {$sense > 0 ? $f * $sweep : -$f * $sweep}] $u]
+        set radial [::fivax::vec::scale [expr {$r0 + $f * ($r1 - $r0)}] $dir]
+        set axial [::fivax::vec::scale [expr {$hs + $f * ($he - $hs)}] $n]
+        lappend out [::fivax::vec::add $center [::fivax::vec::add $radial $axial]]
+    }
+    lappend out $end
+}

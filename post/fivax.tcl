@@ -13,6 +13,7 @@
 #	  table_offset  {x y z}: workpiece origin override for table axes ("")
 #	  msys          1: map CL data through the MSYS frame (0)
 #	  feed_mode     inverse (G93 on rotary moves) or direct (inverse)
+#	  arc_tol       chord tolerance (mm) for arcs written as points (0.002)
 
 set fivax_post_dir [file dirname [file normalize [info script]]]
 foreach fivax_dir [list [file join $fivax_post_dir lib] [file join $fivax_post_dir .. lib]] {
@@ -26,7 +27,7 @@ unset fivax_dir
 if {![info exists fivax_settings]} {set fivax_settings {}}
 set fivax_settings [dict merge [dict create \
     machine [file join $fivax_post_dir .. machines hh-tilt45.tcl] \
-    controller "" table_offset "" msys 0 feed_mode inverse] $fivax_settings]
+    controller "" table_offset "" msys 0 feed_mode inverse arc_tol 0.002] $fivax_settings]
 
 # fivax_setting -- Returns one post setting.
 proc fivax_setting {key} {
@@ -159,21 +160,36 @@ proc MOM_linear_move {} {
     fivax_motion feed
 }
 
-# Arcs go to their end point until arc output is done (CIRCLE + GOTO).
+# Arcs (CIRCLE + GOTO) are written as points within arc_tol of the arc:
+# on a five-axis machine without TCP an arc does not stay an arc.
 proc MOM_circular_move {} {
-    fivax_motion feed
+    global mom_prev_mcs_goto mom_mcs_goto mom_arc_center mom_arc_axis
+    global mom_arc_direction mom_arc_times
+    set xyz {0 1 2}
+    set points [fivax::toolpath::arc [lmap i $xyz {set mom_prev_mcs_goto($i)}] \
+        [lmap i $xyz {set mom_mcs_goto($i)}] [lmap i $xyz {set mom_arc_center($i)}] \
+        [lmap i $xyz {set mom_arc_axis($i)}] \
+        [expr {$mom_arc_direction eq "CLW" ? -1 : 1}] \
+        [expr {[info exists mom_arc_times] ? $mom_arc_times : 0}] [fivax_setting arc_tol]]
+    foreach point $points {
+        fivax_motion feed $point
+    }
 }
 
 proc MOM_gohome_move {} {
     fivax_motion rapid
 }
 
-# fivax_motion -- Hands the current CL point to the planner and writes what is ready.
-proc fivax_motion {kind} {
+# fivax_motion --
+#	Hands a CL point (default: the current mom_mcs_goto) with the current
+#	tool axis to the planner and writes what is ready.
+proc fivax_motion {kind {point ""}} {
     global fivax mom_mcs_goto mom_tool_axis mom_feed_rate
     set feed [expr {[info exists mom_feed_rate] ? $mom_feed_rate : 0.0}]
-    fivax_emit [fivax::motion::add $fivax(plan) $kind \
-        [list $mom_mcs_goto(0) $mom_mcs_goto(1) $mom_mcs_goto(2)] \
+    if {$point eq ""} {
+        set point [list $mom_mcs_goto(0) $mom_mcs_goto(1) $mom_mcs_goto(2)]
+    }
+    fivax_emit [fivax::motion::add $fivax(plan) $kind $point \
         [list $mom_tool_axis(0) $mom_tool_axis(1) $mom_tool_axis(2)] \
         $feed [fivax_where]]
 }
