@@ -665,11 +665,12 @@ proc ::fivax::mom::Cmd_do_template {h name {mode ""}} {
             continue
         }
         set addr [dict get $word address]
+        Leader $h $addr
         if {[dict exists $word expr] && [dict get $word expr] ne ""} {
             # Template text is post code (the .def), evaluated with expr
             # rules in the post interpreter as NX does; never CL data.
             try {
-                set value [$S(interp) eval [list expr [dict get $word expr]]]
+                set value [GlobalExpr $h [dict get $word expr]]
             } on error {msg} {
                 if {[dict exists $word opt] && [dict get $word opt]} continue
                 ::fivax::Fail MOM TEMPLATE "MOM_do_template $name: $addr: $msg"
@@ -682,6 +683,26 @@ proc ::fivax::mom::Cmd_do_template {h name {mode ""}} {
     set line [::fivax::nc::block $S(nc) $words]
     if {$mode ne "CREATE"} {Write $h $line}
     return $line
+}
+
+# ::fivax::mom::GlobalExpr --
+#	Evaluates a .def expression (post code, never CL data) with expr rules
+#	in the post interpreter's global namespace, as NX does, even while a
+#	handler is running.
+proc ::fivax::mom::GlobalExpr {h text} {
+    upvar #0 $h S
+    $S(interp) eval [list namespace eval :: [list expr $text]]
+}
+
+# ::fivax::mom::Leader --
+#	Sets the leader of address addr from its .def LEADER expression (post
+#	code such as [$mom_sys_leader(X)]), evaluated in the post interpreter.
+proc ::fivax::mom::Leader {h addr} {
+    upvar #0 $h S
+    if {![dict exists $S(defDict) addresses $addr leader_expr]} return
+    set text [dict get $S(defDict) addresses $addr leader_expr]
+    if {$text eq ""} return
+    ::fivax::nc::address $S(nc) $addr -leader [GlobalExpr $h $text]
 }
 
 # MOM_force Always|Once|Off addr...

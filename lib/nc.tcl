@@ -292,11 +292,6 @@ proc ::fivax::nc::block {h words} {
     return [join $out $Sep($h)]$Eol($h)
 }
 
-# ::fivax::nc::blockWords -- Same as block (the name lib/mom.tcl calls).
-proc ::fivax::nc::blockWords {h words} {
-    tailcall block $h $words
-}
-
 # ::fivax::nc::line --
 #	Returns text as one block, prefixed with N<seq> when numbering is on.
 proc ::fivax::nc::line {h text} {
