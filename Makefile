@@ -22,8 +22,10 @@ demo: deps
 	$(TCLSH) tools/replay.tcl -machine $(DEMO_MACHINE) -o out/demo.nc $(DEMO_CL)
 	@echo "NC program written to out/demo.nc"
 
+# Speed figures on a generated 200k-point file, beside tools/bench-baseline.txt
+# (BENCH_ARGS: e.g. -points 20000, -noreplay, -save).
 bench: deps
-	$(TCLSH) tools/bench.tcl
+	$(TCLSH) tools/bench.tcl $(BENCH_ARGS)
 
 clean:
 	rm -rf out tests/tmp

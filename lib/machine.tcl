@@ -17,7 +17,7 @@
 #	    GEOMETRY   degenerate axis geometry (parallel axes, tilt along Z)
 
 namespace eval ::fivax::machine {
-    namespace export load parse
+    namespace export load parse rotaryNames
     namespace ensemble create
 
     # Top-level keys and their defaults ("" default with required = 1).
@@ -338,4 +338,11 @@ proc ::fivax::machine::CheckGeometry {src chain} {
         ::fivax::Fail MACHINE GEOMETRY \
             "$src: axes [dict get $a1 name] and [dict get $a2 name] are parallel"
     }
+}
+
+# ::fivax::machine::rotaryNames --
+#	Returns the rotary axis names of machine in output order (alphabetical:
+#	the 4th axis word, then the 5th).
+proc ::fivax::machine::rotaryNames {machine} {
+    lsort [lmap axis [dict get $machine chain] {dict get $axis name}]
 }

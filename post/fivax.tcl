@@ -12,7 +12,13 @@
 #	  controller    dialect: fanuc or linuxcnc (default: the machine's)
 #	  table_offset  {x y z}: workpiece origin override for table axes ("")
 #	  msys          1: map CL data through the MSYS frame (0)
-#	  feed_mode     inverse (G93 on rotary moves) or direct (inverse)
+#	  feed_mode     inverse (G93 on rotary moves), direct or dpm (inverse)
+#	  rotary        optimal (whole-path choice) or greedy (optimal)
+#	  on_limit      retract (retract, reposition, re-engage) or error (retract)
+#	  tol           linearisation tip tolerance, mm; 0 = off (0.01)
+#	  clearance     retract distance along the tool axis, mm ("": the machine's)
+#	  atol, cone, swing, window, weights: planner fine-tuning, see
+#	                lib/motion.tcl (absent: the planner's defaults)
 #	  arc_tol       chord tolerance (mm) for arcs written as points (0.002)
 
 set fivax_post_dir [file dirname [file normalize [info script]]]
@@ -47,6 +53,20 @@ proc fivax_where {} {
     return "event [MOM_ask_event_type]"
 }
 
+# fivax_plan_options -- Returns motion::create options from the post settings.
+proc fivax_plan_options {} {
+    global fivax_settings
+    set options {}
+    foreach {key option} {table_offset -tableOffset msys -msys feed_mode -feedMode
+        rotary -rotary on_limit -onLimit tol -tol clearance -clearance atol -atol
+        cone -cone swing -swing window -window weights -weights} {
+        if {[dict exists $fivax_settings $key]} {
+            lappend options $option [dict get $fivax_settings $key]
+        }
+    }
+    return $options
+}
+
 # fivax_nc_options -- Returns nc::create options from a machine file's output dict.
 proc fivax_nc_options {out} {
     set options {}
@@ -64,14 +84,18 @@ proc MOM_start_of_program {} {
     set out [dict get $machine output]
     set controller [fivax_setting controller]
     if {$controller eq ""} {set controller [dict get $machine controller]}
-    array set fivax [list machine $machine toolNumber 0 pendingLength 0]
-    set fivax(plan) [fivax::motion::create $machine \
-        -tableOffset [fivax_setting table_offset] -msys [fivax_setting msys] \
-        -feedMode [fivax_setting feed_mode]]
+    array set fivax [list machine $machine toolNumber 0 pendingLength 0 feedMode 94]
     set fivax(nc) [fivax::nc::create -dialect $controller \
         -units [dict get $machine units] \
-        -rotaryNames [fivax::motion::outputNames $fivax(plan)] \
+        -rotaryNames [fivax::machine::rotaryNames $machine] \
         {*}[fivax_nc_options $out]]
+    # The planner rounds rotaries to the written resolution before X Y Z.
+    set step [expr {10.0 ** -[dict get [fivax::nc::configure $fivax(nc)] -angleDecimals]}]
+    set fivax(plan) [fivax::motion::create $machine -angleStep $step {*}[fivax_plan_options]]
+    # Inverse-time F (1/min) needs more decimals than mm/min, and G93 wants
+    # F in every block: a second F address, always written.
+    set decimals [expr {[dict exists $out inverse_decimals] ? [dict get $out inverse_decimals] : 3}]
+    fivax::nc::address $fivax(nc) F_inv -leader F -format %.${decimals}f -force always
     set fivax(verify) [fivax::verify::create $machine \
         -tableOffset [fivax_setting table_offset]]
     set name [expr {[info exists mom_part_name] ? $mom_part_name : "PART"}]
@@ -86,7 +110,7 @@ proc MOM_start_of_program {} {
 
 proc MOM_start_of_path {} {
     global fivax mom_path_name
-    fivax_emit [fivax::motion::flush $fivax(plan)]
+    fivax_emit [fivax::motion::startPath $fivax(plan)]
     fivax_out [fivax::nc::comment $fivax(nc) "OPERATION $mom_path_name"]
 }
 
@@ -194,10 +218,20 @@ proc fivax_motion {kind {point ""}} {
         $feed [fivax_where]]
 }
 
-# fivax_emit -- Writes the planner's moves as blocks and checks each one.
+# fivax_emit --
+#	Writes the planner's moves as blocks and checks each one. F is written
+#	again after leaving inverse time; retracts are reported on the listing.
 proc fivax_emit {moves} {
     global fivax
     foreach move $moves {
+        if {[dict get $move tag] eq "retract"} {
+            MOM_output_to_listing_device "fivax: retract at [dict get $move src]: [dict get $move note]"
+        }
+        if {[dict get $move kind] eq "feed"} {
+            set mode [dict get $move feedMode]
+            if {$mode != $fivax(feedMode) && $mode == 94} {fivax::nc::force $fivax(nc) once F}
+            set fivax(feedMode) $mode
+        }
         set words [fivax::motion::words $fivax(plan) $move]
         if {$fivax(pendingLength) && [dict exists $words Z]} {
             set words [linsert $words 2 G_length 43 H $fivax(pendingLength)]

@@ -19,7 +19,11 @@ namespace eval ::replay {
         {controller.arg   "" "controller dialect: fanuc or linuxcnc (default: the machine's)"}
         {table-offset.arg "" "workpiece origin for the table axes: \"x y z\" in mm (default: the machine's)"}
         {msys                "express the CL data in the frame of the file's MSYS record"}
-        {feed.arg  inverse   "feed on rotary moves: inverse (G93) or direct (mm/min)"}
+        {feed.arg  inverse   "feed on rotary moves: inverse (G93), direct (mm/min) or dpm (degrees per minute)"}
+        {rotary.arg optimal  "rotary solution choice: optimal (whole path) or greedy"}
+        {on-limit.arg retract "no in-limit continuation: retract (retract, reposition, re-engage) or error"}
+        {tol.arg   0.01      "linearisation tolerance of the tool tip, mm (0: no linearisation)"}
+        {clearance.arg ""    "retract distance along the tool axis, mm (default: the machine's)"}
         {quiet               "no summary on standard error"}
     }
     variable usage "?options? part.cls\n\nReplays an NX CLSF file through the fivax post.\nOptions:"
@@ -71,12 +75,22 @@ proc ::replay::Settings {opts} {
     if {$controller ni {"" fanuc linuxcnc}} {
         Die "-controller: unknown controller '$controller': must be fanuc or linuxcnc"
     }
-    set feed [dict get $opts feed]
-    if {$feed ni {inverse direct}} {
-        Die "-feed: '$feed': must be inverse or direct"
+    foreach {key choices} {feed {inverse direct dpm} rotary {optimal greedy}
+        on-limit {retract error}} {
+        if {[dict get $opts $key] ni $choices} {
+            Die "-$key: '[dict get $opts $key]': must be [join $choices { or }]"
+        }
+    }
+    foreach key {tol clearance} {
+        set v [dict get $opts $key]
+        if {$v ne "" && ([::fivax::parseReal $v] eq "" || [::fivax::parseReal $v] < 0)} {
+            Die "-$key: '$v' is not a number >= 0"
+        }
     }
     dict create machine $machine controller $controller table_offset $offset \
-        msys [dict get $opts msys] feed_mode $feed
+        msys [dict get $opts msys] feed_mode [dict get $opts feed] \
+        rotary [dict get $opts rotary] on_limit [dict get $opts on-limit] \
+        tol [dict get $opts tol] clearance [dict get $opts clearance]
 }
 
 # ::replay::Listing -- Prints a listing line of the post on stderr (the summary is printed apart).
@@ -116,6 +130,10 @@ proc ::replay::Summary {stats} {
             $checked $maxPos $maxAng]
         puts stderr [format "fivax: %d cutting moves checked at quarter points: max deviation %.6f mm, %.6f deg; %d rotary values outside limits" \
             $segments $maxMidPos $maxMidAng $limitViolations]
+    }
+    if {[info exists inserted]} {
+        puts stderr [format "fivax: %d points inserted, %d retracts, rotary travel %.3f deg; %d azimuth holds, %d singular swings, %d moves left out of tolerance" \
+            $inserted $retracts $travel $holds $swings $unresolved]
     }
 }
 
