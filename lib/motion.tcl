@@ -951,7 +951,7 @@ proc ::fivax::motion::Split {h a b n src} {
         foreach end [list $a $b] other [list $b $a] {
             lassign $end je P t
             if {[InCone $h $t]} {
-                set c [Departure $h $end $other $src]
+                set c [Quantize $h [Departure $h $end $other $src]]
                 if {abs($c - [lindex $je 4]) > 1e-9} {
                     set q1 [HoldTilt $h $t [lindex $je 3] $c]
                     if {$q1 ne ""} {return [list [Record $h $P $t $q1 $c -1]]}
@@ -1044,14 +1044,19 @@ proc ::fivax::motion::Closest {cands g1 g2 la lb} {
 #	outside the singular cone, where candidates are exact).
 proc ::fivax::motion::Record {h P t q1 q2 lab} {
     upvar #0 $h S
-    if {$S(stepRad) > 0} {
-        # Round to the output resolution first: X Y Z then absorb it.
-        set q1 [expr {round($q1 / $S(stepRad)) * $S(stepRad)}]
-        set q2 [expr {round($q2 / $S(stepRad)) * $S(stepRad)}]
-    }
+    # Round to the output resolution first: X Y Z then absorb it.
+    set q1 [Quantize $h $q1]
+    set q2 [Quantize $h $q2]
     set joints [concat [::fivax::kin::position $S(model) $P [list $q1 $q2]] $q1 $q2]
     if {![InCone $h $t]} {return [list $joints $P $t $t $lab]}
     list $joints $P $t [lindex [::fivax::kin::forward $S(model) $joints] 1] $lab
+}
+
+# ::fivax::motion::Quantize -- Returns rotary value q (rad) rounded to the -angleStep output resolution.
+proc ::fivax::motion::Quantize {h q} {
+    upvar #0 $h S
+    if {$S(stepRad) <= 0} {return $q}
+    expr {round($q / $S(stepRad)) * $S(stepRad)}
 }
 
 # ::fivax::motion::InCone --

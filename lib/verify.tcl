@@ -61,7 +61,11 @@ proc ::fivax::verify::block {h line move} {
     upvar #0 $h S
     variable pi
     set text [regsub -all {\([^)]*\)} $line ""]
-    foreach {- letter value} [regexp -all -inline {([A-Z])([-+]?[0-9]*\.?[0-9]+)} $text] {
+    # (a flat pattern: nested groups with -all -inline cost 30 times more)
+    foreach word [regexp -all -inline {[A-Z][-+.0-9]+} $text] {
+        set letter [string index $word 0]
+        set value [string range $word 1 end]
+        if {![string is double -strict $value]} continue
         if {$letter in {X Y Z}} {
             set S($letter) $value
         } elseif {[set i [lsearch -exact $S(names) $letter]] >= 0} {
