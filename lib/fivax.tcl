@@ -31,10 +31,9 @@ proc ::fivax::isReal {tok} {
     expr {[parseReal $tok] ne ""}
 }
 
-foreach ::fivax::File {vec.tcl clsf.tcl machine.tcl kin.tcl motion.tcl nc.tcl def.tcl mom.tcl verify.tcl toolpath.tcl} {
-    if {[file exists [file join $::fivax::home $::fivax::File]]} {
-        source [file join $::fivax::home $::fivax::File]
-    }
+foreach ::fivax::File {vec.tcl clsf.tcl machine.tcl kin.tcl motion.tcl nc.tcl def.tcl
+        mom.tcl verify.tcl toolpath.tcl} {
+    source [file join $::fivax::home $::fivax::File]
 }
 unset ::fivax::File
 

@@ -153,6 +153,10 @@ proc ::replay::main {argv} {
     try {
         set stats [Post $settings $clsf $chan]
         close $chan
+        if {[dict exists $stats limitViolations] && [dict get $stats limitViolations] > 0} {
+            # A safety net: the planner never writes such a value.
+            error "[dict get $stats limitViolations] rotary values outside the machine's limits; no NC file written"
+        }
     } on error {msg} {
         if {$chan in [chan names]} {close $chan}
         file delete -force $tmp
