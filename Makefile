@@ -8,11 +8,13 @@ DEMO_CL ?= tests/data/demo-5ax.cls
 all: test
 
 # Installs tcllib (Debian package) when Tcl cannot load it.
+# (tclsh reading a script from stdin exits 0 on errors: exit 1 explicitly.)
+HAVE_DEPS = echo 'exit [catch {package require cmdline; package require tcltest 2.5}]' | $(TCLSH)
+
 deps:
-	@echo 'package require cmdline; package require tcltest 2.5' | $(TCLSH) >/dev/null 2>&1 || \
-	  { echo "installing tcllib"; \
+	@$(HAVE_DEPS) || { echo "installing tcllib"; \
 	    (apt-get install -y tcllib || (apt-get update && apt-get install -y tcllib)) >/dev/null; }
-	@echo 'package require cmdline' | $(TCLSH) >/dev/null
+	@$(HAVE_DEPS) || { echo "tcllib is missing and could not be installed"; exit 1; }
 
 test: deps
 	$(TCLSH) tests/all.tcl
