@@ -3,29 +3,25 @@
 #	SolidWorks CAM, Makino FFCAM). Reads one logical record at a time with
 #	gets and returns it as a dict; file text is data and is never evaluated.
 #
-#	Every record dict has kind, file, line (first physical line) and the
-#	kind's fields; see ::fivax::clsf::parse. PAINT records are skipped.
+#	A reader is an object (open, channel; "$reader next", "$reader
+#	destroy"). Every record dict has kind, file, line (first physical
+#	line) and the kind's fields; see ::fivax::clsf::parse. PAINT records
+#	are skipped.
 #	Errors are {FIVAX CLSF <detail>} with the message "FILE:LINE: MAJOR: what":
 #	  OPEN    the file or channel cannot be read
-#	  HANDLE  unknown or closed reader handle
 #	  NUMBER  malformed or non-finite number, or non-integer where one is needed
 #	  COUNT   wrong number of numbers for the record
 #	  AXIS    a direction whose length differs from 1 by more than 1e-3
 #	  WORD    missing, unknown or misplaced minor word
 
 namespace eval ::fivax::clsf {
-    namespace export open openChannel next close parse
-    namespace ensemble create
-    # Per-handle state, one array per field, keyed by handle.
-    variable Chan
-    variable Name
-    variable Line
-    variable Own
-    variable Counter 0
+    namespace export open channel parse
+    namespace ensemble create -prefixes 0
 }
 
 # ::fivax::clsf::open --
-#	Returns a reader handle on the CL file at path (closed by close).
+#	Returns a Reader object on the CL file at path; destroying it closes
+#	the file.
 #	Errors: {FIVAX CLSF OPEN} "PATH: cannot open: REASON".
 proc ::fivax::clsf::open {path} {
     if {[file isdirectory $path]} {
@@ -40,87 +36,64 @@ proc ::fivax::clsf::open {path} {
         ::fivax::Fail CLSF OPEN "$path: cannot open: $msg"
     }
     chan configure $chan -translation auto -encoding utf-8 -buffersize 65536
-    return [NewHandle $chan $path 1]
+    Reader new $chan $path 1
 }
 
-# ::fivax::clsf::openChannel --
-#	Returns a reader handle on the open channel chan; name is the file name
-#	used in records and messages. close leaves chan open.
-proc ::fivax::clsf::openChannel {chan name} {
+# ::fivax::clsf::channel --
+#	Returns a Reader object on the open channel chan; name is the file name
+#	used in records and messages. Destroying the reader leaves chan open.
+proc ::fivax::clsf::channel {chan name} {
     if {$chan ni [chan names]} {
         ::fivax::Fail CLSF OPEN "$name: cannot open: no channel named \"$chan\""
     }
-    return [NewHandle $chan $name 0]
+    Reader new $chan $name 0
 }
 
-# ::fivax::clsf::NewHandle -- Returns a new handle reading chan, named name.
-proc ::fivax::clsf::NewHandle {chan name own} {
-    variable Chan
-    variable Name
-    variable Line
-    variable Own
-    variable Counter
-    set h clsf[incr Counter]
-    set Chan($h) $chan
-    set Name($h) $name
-    set Line($h) 0
-    set Own($h) $own
-    return $h
-}
+oo::class create ::fivax::clsf::Reader {
+    # chan, name (for messages), line (last physical line read), own (1:
+    # close chan on destroy).
+    variable chan name line own
 
-# ::fivax::clsf::close --
-#	Forgets the handle h; closes its channel only when open opened it.
-proc ::fivax::clsf::close {h} {
-    variable Chan
-    variable Name
-    variable Line
-    variable Own
-    if {![info exists Chan($h)]} {
-        ::fivax::Fail CLSF HANDLE "unknown CLSF reader handle \"$h\""
+    constructor {aChan aName aOwn} {
+        set chan $aChan
+        set name $aName
+        set line 0
+        set own $aOwn
     }
-    set chan $Chan($h)
-    set own $Own($h)
-    unset Chan($h) Name($h) Line($h) Own($h)
-    if {$own} {::close $chan}
-    return
-}
 
-# ::fivax::clsf::next --
-#	Returns the next record dict read from handle h, or {} at end of file.
-#	Joins "$" continuations, drops "$$" comments, blank lines and PAINT.
-#	After an error the handle stays usable: the bad record is consumed.
-proc ::fivax::clsf::next {h} {
-    variable Chan
-    variable Name
-    variable Line
-    if {![info exists Chan($h)]} {
-        ::fivax::Fail CLSF HANDLE "unknown CLSF reader handle \"$h\""
+    destructor {
+        if {$own && $chan in [chan names]} {::close $chan}
     }
-    set chan $Chan($h)
-    set n $Line($h)
-    while {[gets $chan text] >= 0} {
-        set first [incr n]
-        if {[string first "\$" $text] >= 0} {
-            # A single trailing $ continues the record (comments included).
-            set text [string trimright $text]
-            while {[string index $text end] eq "\$"
-                    && [string index $text end-1] ne "\$"} {
-                set text [string range $text 0 end-1]
-                if {[gets $chan more] < 0} {break}
-                incr n
-                append text " " [string trimright $more]
+
+    # Returns the next record dict, or {} at end of file. Joins "$"
+    # continuations, drops "$$" comments, blank lines and PAINT. After an
+    # error the reader stays usable: the bad record is consumed.
+    method next {} {
+        set n $line
+        while {[gets $chan text] >= 0} {
+            set first [incr n]
+            if {[string first "\$" $text] >= 0} {
+                # A single trailing $ continues the record (comments included).
+                set text [string trimright $text]
+                while {[string index $text end] eq "\$"
+                        && [string index $text end-1] ne "\$"} {
+                    set text [string range $text 0 end-1]
+                    if {[gets $chan more] < 0} {break}
+                    incr n
+                    append text " " [string trimright $more]
+                }
+                set c [string first "\$\$" $text]
+                if {$c >= 0} {set text [string range $text 0 [expr {$c - 1}]]}
             }
-            set c [string first "\$\$" $text]
-            if {$c >= 0} {set text [string range $text 0 [expr {$c - 1}]]}
+            set text [string trim $text]
+            if {$text eq ""} {continue}
+            set line $n
+            set rec [::fivax::clsf::parse $text $name $first]
+            if {[dict size $rec]} {return $rec}
         }
-        set text [string trim $text]
-        if {$text eq ""} {continue}
-        set Line($h) $n
-        set rec [parse $text $Name($h) $first]
-        if {[dict size $rec]} {return $rec}
+        set line $n
+        return {}
     }
-    set Line($h) $n
-    return {}
 }
 
 # ::fivax::clsf::parse --
@@ -150,11 +123,11 @@ proc ::fivax::clsf::parse {text file line} {
                     "$file:$line: $major: expected 3 or 6 numbers, got $cnt"
             }
             lassign $toks a b c i j k
-            set x [::fivax::parseReal $a]
+            set x [::fivax::num::parse $a]
             if {$x eq ""} {BadNumber $a $file $line $major}
-            set y [::fivax::parseReal $b]
+            set y [::fivax::num::parse $b]
             if {$y eq ""} {BadNumber $b $file $line $major}
-            set z [::fivax::parseReal $c]
+            set z [::fivax::num::parse $c]
             if {$z eq ""} {BadNumber $c $file $line $major}
             set axis {}
             if {$cnt == 6} {set axis [Axis $i $j $k $file $line $major "tool axis"]}
@@ -210,7 +183,7 @@ proc ::fivax::clsf::BadNumber {tok file line major} {
 
 # ::fivax::clsf::Num -- Returns token tok as a double, or raises NUMBER.
 proc ::fivax::clsf::Num {tok file line major} {
-    set v [::fivax::parseReal $tok]
+    set v [::fivax::num::parse $tok]
     if {$v eq ""} {BadNumber $tok $file $line $major}
     return $v
 }
@@ -255,7 +228,7 @@ proc ::fivax::clsf::Axis {i j k file line major label} {
 proc ::fivax::clsf::Words {rest file line major} {
     set out {}
     foreach t [Tokens $rest] {
-        set v [::fivax::parseReal $t]
+        set v [::fivax::num::parse $t]
         if {$v ne ""} {
             lappend out N $v
         } elseif {[string match {[-+.0-9]*} $t]} {
@@ -291,7 +264,7 @@ proc ::fivax::clsf::ParseCircle {rest file line} {
     set toks [Tokens $rest]
     for {set p 0} {$p < [llength $toks]} {incr p} {
         set t [lindex $toks $p]
-        set v [::fivax::parseReal $t]
+        set v [::fivax::num::parse $t]
         if {$v ne ""} {
             lappend nums $v
             lappend raw $t

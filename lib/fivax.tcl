@@ -1,6 +1,16 @@
 # fivax.tcl --
-#	Package loader for fivax, a five-axis postprocessor library in pure Tcl.
-#	Holds the shared error and number helpers every module uses.
+#	Package loader for fivax, a five-axis postprocessor library in pure
+#	Tcl: sources the modules in pipeline order and holds the one error
+#	helper every module raises its errors with.
+#
+#	    num opts vec       numbers, options, 3-vectors (used by all)
+#	    clsf               CL file reader             (replay's host side)
+#	    mom def            NX's MOM runtime, .def files (replay's host side)
+#	    machine kin        machine files, kinematics
+#	    curve motion/      CL path geometry, the planner
+#	    nc output          blocks, the dialect output layer
+#	    verify             checking written blocks
+#	    settings           the option table of a posting job
 
 package require Tcl 8.6
 
@@ -15,27 +25,18 @@ proc ::fivax::Fail {area detail msg} {
     return -code error -level 2 -errorcode [list FIVAX $area $detail] $msg
 }
 
-# ::fivax::parseReal --
-#	Returns the finite double written in tok, or "" when tok is not one.
-#	Accepts 100. and .5; refuses nan, Inf, 1e400, hex and trailing junk.
-proc ::fivax::parseReal {tok} {
-    if {[scan $tok %lf%c v junk] != 1} {return ""}
-    if {!(abs($v) < Inf)} {return ""}
-    if {![regexp {^\s*[-+]?(\d+\.?\d*|\.\d+)([eE][-+]?\d+)?\s*$} $tok]} {return ""}
-    return [expr {double($v)}]
-}
-
-# ::fivax::isReal --
-#	Returns 1 when tok is a finite decimal number as parseReal accepts it.
-proc ::fivax::isReal {tok} {
-    expr {[parseReal $tok] ne ""}
-}
-
-foreach ::fivax::File {vec.tcl clsf.tcl machine.tcl kin.tcl motion.tcl nc.tcl def.tcl
-        mom.tcl verify.tcl toolpath.tcl} {
+foreach ::fivax::File {
+    num.tcl opts.tcl vec.tcl
+    clsf.tcl mom.tcl def.tcl
+    machine.tcl kin.tcl
+    curve.tcl motion/plan.tcl motion/candidates.tcl motion/moves.tcl
+    motion/linearise.tcl motion/feeds.tcl
+    nc.tcl output.tcl
+    verify.tcl
+    settings.tcl
+} {
     source [file join $::fivax::home $::fivax::File]
 }
 unset ::fivax::File
 
-## Ready
 package provide fivax 0.1

@@ -2,8 +2,11 @@
 #	Forward and inverse kinematics of two-rotary-axis (five-axis) machines:
 #	the generic chain of kinematics.md section 2, an inverse that solves the
 #	orientation with Paden-Kahan subproblem 2 and the position from the
-#	linear position equation, and the closed forms of sections 3-5 as
-#	cross-checks. Angles in radians, lengths in the machine's units.
+#	linear position equation, and the error of the controller's linear
+#	joint interpolation between two poses (section 7), which the planner
+#	and the checker both measure. Angles in radians, lengths in the
+#	machine's units. (The papers' closed forms, kept as cross-checks, live
+#	in tests/kinref.tcl.)
 #
 #	Conventions (chain = machine dict 'chain', forward order): axis 1 is the
 #	tool-side (tilt) axis, axis 2 the azimuth axis. Joint vectors are
@@ -22,9 +25,9 @@
 #	Errors: {FIVAX KIN <DETAIL>}.
 
 namespace eval ::fivax::kin {
-    namespace export model forward orientations position inverse \
-        closedHeadHead closedHeadTable nutatingTilt
-    namespace ensemble create
+    namespace export model forward orientations position interpolationError
+    namespace ensemble create -prefixes 0
+    namespace upvar ::fivax::num pi pi
 
     # |t x u2| below this (t within ~1e-12 rad of the azimuth axis) is
     # reported 'singular'; the round-trip error this causes is < 1e-12.
@@ -34,7 +37,6 @@ namespace eval ::fivax::kin {
     # g = 0; the two near-coincident roots would differ by ~sqrt(D) in the
     # angles but only by ~D in the tool axis, so merging them costs < 1e-11).
     variable edgeTol 1e-12
-    variable pi 3.141592653589793
 }
 
 # ::fivax::kin::model --
@@ -45,7 +47,7 @@ namespace eval ::fivax::kin {
 #	Errors: {FIVAX KIN VALUE} for a non-numeric tool length or offset.
 proc ::fivax::kin::model {machine toolLength {tableOffset ""}} {
     if {$toolLength eq ""} {set toolLength [dict get $machine tool_length]}
-    set tl [::fivax::parseReal $toolLength]
+    set tl [::fivax::num::parse $toolLength]
     if {$tl eq ""} {::fivax::Fail KIN VALUE "tool length is not a number: $toolLength"}
     if {$tableOffset eq ""} {set tableOffset [dict get $machine table_offset]}
     if {![string is list $tableOffset] || [llength $tableOffset] != 3} {
@@ -53,7 +55,7 @@ proc ::fivax::kin::model {machine toolLength {tableOffset ""}} {
     }
     set off {}
     foreach c $tableOffset {
-        set v [::fivax::parseReal $c]
+        set v [::fivax::num::parse $c]
         if {$v eq ""} {::fivax::Fail KIN VALUE "table offset is not a list of 3 numbers: $tableOffset"}
         lappend off $v
     }
@@ -280,103 +282,78 @@ proc ::fivax::kin::position {model P q} {
         [expr {$vz * $c1 - ($ux1 * $vy - $uy1 * $vx) * $n1 + $uz1 * $k + $pz1}]
 }
 
-# ::fivax::kin::inverse --
-#	Returns every joint vector {X Y Z q1 q2} putting the tip at P with axis t
-#	(one or two; {} when t is unreachable). At a singular t, q2 is azimuth
-#	(default 0.0: callers pass their previous azimuth).
-proc ::fivax::kin::inverse {model P t {azimuth 0.0}} {
-    lassign [orientations $model $t] status sols
-    set out {}
-    foreach q $sols {
-        if {$status eq "singular"} {lset q 1 $azimuth}
-        lappend out [list {*}[position $model $P $q] {*}$q]
+# ::fivax::kin::interpolationError --
+#	Returns {dp da}: the largest distance (mm) of the tool tip from the
+#	segment P0-P1 and the largest angle (rad) of the tool axis from the
+#	great-circle arc between unit axes t0 and t1, at the quarter points
+#	(middle first) of the linear interpolation of joint vectors j0 to j1 on
+#	model (forward kinematics only). With tol and atol it stops at the
+#	first point beyond either. The planner's linearisation and the checker
+#	both measure with it.
+proc ::fivax::kin::interpolationError {model j0 j1 P0 P1 t0 t1 {tol Inf} {atol Inf}} {
+    lassign $j0 X0 Y0 Z0 a0 b0
+    lassign $j1 X1 Y1 Z1 a1 b1
+    set dX [expr {$X1 - $X0}]
+    set dY [expr {$Y1 - $Y0}]
+    set dZ [expr {$Z1 - $Z0}]
+    set da [expr {$a1 - $a0}]
+    set db [expr {$b1 - $b0}]
+    lassign $P0 px py pz
+    lassign $P1 qx qy qz
+    set ux [expr {$qx - $px}]
+    set uy [expr {$qy - $py}]
+    set uz [expr {$qz - $pz}]
+    set len2 [expr {$ux * $ux + $uy * $uy + $uz * $uz}]
+    # Arc t0-t1: unit normal n; the point t is beside the arc (not beyond
+    # an end) when t.(n x t0) >= 0 and t.(t1 x n) >= 0.
+    lassign $t0 ax ay az
+    lassign $t1 bx by bz
+    set nx [expr {$ay * $bz - $az * $by}]
+    set ny [expr {$az * $bx - $ax * $bz}]
+    set nz [expr {$ax * $by - $ay * $bx}]
+    set nl [expr {sqrt($nx * $nx + $ny * $ny + $nz * $nz)}]
+    set arc [expr {$nl >= 1e-12}]
+    if {$arc} {
+        set nx [expr {$nx / $nl}]
+        set ny [expr {$ny / $nl}]
+        set nz [expr {$nz / $nl}]
+        set ex [expr {$ny * $az - $nz * $ay}]
+        set ey [expr {$nz * $ax - $nx * $az}]
+        set ez [expr {$nx * $ay - $ny * $ax}]
+        set fx [expr {$by * $nz - $bz * $ny}]
+        set fy [expr {$bz * $nx - $bx * $nz}]
+        set fz [expr {$bx * $ny - $by * $nx}]
     }
-    return $out
-}
-
-# ::fivax::kin::Wrap -- Returns angle a (radians) wrapped into (-pi, pi].
-proc ::fivax::kin::Wrap {a} {
-    variable pi
-    set a [expr {atan2(sin($a), cos($a)) + 0.0}]
-    if {$a <= -$pi} {set a [expr {$a + 2.0 * $pi}]}
-    return $a
-}
-
-# ::fivax::kin::closedHeadHead --
-#	Returns the {X Y Z B C} (radians) of kinematics.md section 3 for tip P and
-#	unit axis t on a head-head machine with B tilted by alpha (radians),
-#	L = pivot + tool length and offset yH (C sense -1, B sense +1). One
-#	solution when B = 0 (then C = 0) or B = 180 deg, none when
-#	K < -cos(2 alpha).
-proc ::fivax::kin::closedHeadHead {alpha L yH P t} {
-    lassign $P x y z
-    lassign $t I J K
-    set ca [expr {cos($alpha)}]
-    set sa [expr {sin($alpha)}]
-    set cb [expr {($K - $sa * $sa) / ($ca * $ca)}]
-    if {$cb < -1.0 - 1e-12 || $cb > 1.0 + 1e-12} {return {}}
-    set cb [expr {min(1.0, max(-1.0, $cb))}]
-    set B [expr {acos($cb)}]
-    set out {}
-    variable pi
-    foreach Bs [expr {$B > 0.0 && $B < $pi ? [list $B [expr {-$B}]] : [list $B]}] {
-        set p [expr {$ca * sin($Bs)}]
-        set q [expr {0.5 * sin(2.0 * $alpha) * (1.0 - cos($Bs))}]
-        set pq [expr {$p * $p + $q * $q}]
-        if {$pq == 0.0} {
-            set C 0.0
+    set dp 0.0
+    set dg 0.0
+    foreach s {0.5 0.25 0.75} {
+        lassign [forward $model [list [expr {$X0 + $s * $dX}] \
+            [expr {$Y0 + $s * $dY}] [expr {$Z0 + $s * $dZ}] \
+            [expr {$a0 + $s * $da}] [expr {$b0 + $s * $db}]]] P t
+        lassign $P x y z
+        lassign $t tx ty tz
+        set x [expr {$x - $px}]
+        set y [expr {$y - $py}]
+        set z [expr {$z - $pz}]
+        # (ternaries: min() and max() are ten times slower in expr)
+        set u [expr {$len2 > 0.0 ? ($x * $ux + $y * $uy + $z * $uz) / $len2 : 0.0}]
+        set u [expr {$u < 0.0 ? 0.0 : $u > 1.0 ? 1.0 : $u}]
+        set x [expr {$x - $u * $ux}]
+        set y [expr {$y - $u * $uy}]
+        set z [expr {$z - $u * $uz}]
+        set d [expr {sqrt($x * $x + $y * $y + $z * $z)}]
+        if {$d > $dp} {set dp $d}
+        if {$arc && $tx * $ex + $ty * $ey + $tz * $ez >= 0.0
+                && $tx * $fx + $ty * $fy + $tz * $fz >= 0.0} {
+            set g [expr {abs($tx * $nx + $ty * $ny + $tz * $nz)}]
+            set g [expr {$g < 1.0 ? asin($g) : 1.5707963267948966}]
         } else {
-            set C [expr {atan2(($I * $q - $J * $p) / $pq, ($I * $p + $J * $q) / $pq)}]
+            set g [::fivax::vec::angle $t $t0]
+            set g2 [::fivax::vec::angle $t $t1]
+            if {$g2 < $g} {set g $g2}
         }
-        set C [Wrap $C]
-        set Bs [Wrap $Bs]
-        lappend out [list \
-            [expr {$x + $yH * $ca * sin($C) + $L * $I}] \
-            [expr {$y - $yH * $ca * (1.0 - cos($C)) + $L * $J}] \
-            [expr {$z - $L * (1.0 - $K)}] $Bs $C]
+        if {$g > $dg} {set dg $g}
+        if {$dp > $tol || $dg > $atol} break
     }
-    return $out
-}
-
-# ::fivax::kin::closedHeadTable --
-#	Returns the {X Y Z B C} (radians) of kinematics.md section 4 for tip P and
-#	unit axis t: head B about +Y through (0,0,L) above the tip (sense +1),
-#	table C about +Z through center (default the origin, sense -1).
-proc ::fivax::kin::closedHeadTable {L P t {center {0 0 0}}} {
-    variable pi
-    lassign $P x y z
-    lassign $t I J K
-    lassign $center cx cy cz
-    set B [expr {acos(min(1.0, max(-1.0, $K)))}]
-    if {hypot($I, $J) == 0.0} {
-        set sols [list [list $B 0.0]]
-    } else {
-        set C [expr {atan2(-$J, $I)}]
-        set sols [list [list $B $C] [list [expr {-$B}] [expr {$C + $pi}]]]
-    }
-    set out {}
-    foreach s $sols {
-        lassign $s B C
-        set B [Wrap $B]
-        set C [Wrap $C]
-        set dx [expr {$x - $cx}]
-        set dy [expr {$y - $cy}]
-        lappend out [list \
-            [expr {$cx + $dx * cos($C) - $dy * sin($C) + $L * sin($B)}] \
-            [expr {$cy + $dx * sin($C) + $dy * cos($C)}] \
-            [expr {$z + $L * (cos($B) - 1.0)}] $B $C]
-    }
-    return $out
-}
-
-# ::fivax::kin::nutatingTilt --
-#	Returns phi = acos(2K - 1) (radians), the outer-axis angle of a 45-degree
-#	nutating table for tool-axis component K (kinematics.md section 5).
-#	Errors: {FIVAX KIN UNREACHABLE} for K < 0 (beyond 1e-12).
-proc ::fivax::kin::nutatingTilt {K} {
-    if {![string is double -strict $K]} {::fivax::Fail KIN VALUE "K is not a number: $K"}
-    if {$K < -1e-12} {
-        ::fivax::Fail KIN UNREACHABLE "tool axis K = $K < 0 is out of reach of a 45-degree nutating table"
-    }
-    expr {acos(min(1.0, max(-1.0, 2.0 * $K - 1.0)))}
+    list $dp $dg
 }

@@ -18,7 +18,7 @@
 
 namespace eval ::fivax::machine {
     namespace export load parse rotaryNames
-    namespace ensemble create
+    namespace ensemble create -prefixes 0
 
     # Top-level keys and their defaults ("" default with required = 1).
     variable topDefaults {
@@ -115,7 +115,7 @@ proc ::fivax::machine::parse {text sourceName} {
     if {!(abs($alphaDeg) < 90.0)} {
         ::fivax::Fail MACHINE VALUE "$src: 'alpha' must lie strictly between -90 and 90: $alphaDeg"
     }
-    set alpha [expr {$alphaDeg * acos(-1.0) / 180.0}]
+    set alpha [::fivax::num::rad $alphaDeg]
     dict set m alpha $alpha
     set yH [Real $src y_H [Get $raw y_H]]
     dict set m y_H $yH
@@ -138,7 +138,7 @@ proc ::fivax::machine::parse {text sourceName} {
     if {[dict get $m feed_min] > [dict get $m feed_max]} {
         ::fivax::Fail MACHINE VALUE "$src: 'feed_min' exceeds 'feed_max'"
     }
-    dict set m max_swing [expr {[dict get $m max_swing] * acos(-1.0) / 180.0}]
+    dict set m max_swing [::fivax::num::rad [dict get $m max_swing]]
 
     set output [Get $raw output]
     if {![string is list $output] || [llength $output] % 2} {
@@ -169,7 +169,7 @@ proc ::fivax::machine::Get {raw key} {
 
 # ::fivax::machine::Real -- Returns value as a finite double or fails naming key.
 proc ::fivax::machine::Real {src key value {what ""}} {
-    set v [::fivax::parseReal $value]
+    set v [::fivax::num::parse $value]
     if {$v eq ""} {
         ::fivax::Fail MACHINE VALUE "$src: ${what}'$key' is not a number: $value"
     }
@@ -257,8 +257,7 @@ proc ::fivax::machine::ParseAxes {src family axesText alpha yH} {
         set lim {}
         foreach key {min max} sign {-1 1} {
             if {[dict exists $p $key]} {
-                dict set lim $key [expr {[Real $src $key [dict get $p $key] $what] \
-                                             * acos(-1.0) / 180.0}]
+                dict set lim $key [::fivax::num::rad [Real $src $key [dict get $p $key] $what]]
             } elseif {$continuous} {
                 dict set lim $key [expr {$sign * $unlimited}]
             } else {

@@ -4,7 +4,8 @@
 
 namespace eval ::fivax::vec {
     namespace export add sub scale dot cross norm unit rotate angle lerp slerp
-    namespace ensemble create
+    namespace ensemble create -prefixes 0
+    namespace upvar ::fivax::num pi pi
 }
 
 # ::fivax::vec::add -- Returns a + b.
@@ -88,8 +89,9 @@ proc ::fivax::vec::lerp {a b s} {
 #	Returns the unit vector at fraction s of the great-circle arc from unit
 #	a to unit b (plain normalised lerp when they are (anti)parallel).
 proc ::fivax::vec::slerp {a b s} {
+    variable pi
     set w [angle $a $b]
-    if {$w < 1e-12 || $w > 3.141592653589793 - 1e-9} {
+    if {$w < 1e-12 || $w > $pi - 1e-9} {
         return [unit [lerp $a $b $s]]
     }
     set sw [expr {sin($w)}]

@@ -20,16 +20,16 @@ package require Tcl 8.6
 set root [file dirname [file dirname [file normalize [info script]]]]
 set auto_path [linsert $auto_path 0 [file join $root lib]]
 package require fivax 0.1
-package require cmdline
+source [file join $root tools lib toolpath.tcl]
 
 namespace eval ::bench {
     variable options {
-        {points.arg  200000 "CL points in the generated file (passes of 1000)"}
-        {machine.arg ""     "machine file (default machines/hh-tilt45.tcl)"}
-        {noreplay           "skip the end-to-end replay row"}
-        {save               "store the figures as the new baseline"}
+        {-points {int min 1000} 200000 N "CL points in the generated file (passes of 1000)"}
+        {-machine text "" FILE "machine file (default machines/hh-tilt45.tcl)"}
+        {-noreplay bool 0 "" "skip the end-to-end replay row"}
+        {-save bool 0 "" "store the figures as the new baseline"}
+        {-help bool 0 "" "print this help"}
     }
-    variable usage "?options?\n\nMeasures planner speed on a generated CL file.\nOptions:"
     # Figures in table order: key, label.
     variable rows {
         points       "CL points"
@@ -51,11 +51,11 @@ namespace eval ::bench {
 #	the number of points.
 proc ::bench::Generate {n path} {
     set passes [expr {max(1, $n / 1000)}]
-    set pts [::fivax::toolpath::raster -passes $passes -step 1000 -D 16 -r 4 -lead 10 -tilt 15]
+    set pts [::fivax::toolpath raster -passes $passes -step 1000 -D 16 -r 4 -lead 10 -tilt 15]
     set chan [open $path w]
     try {
         chan configure $chan -translation lf
-        puts $chan [join [::fivax::toolpath::clsf $pts -op BENCH_RASTER -D 16 -r 4 -length 75] \n]
+        puts $chan [join [::fivax::toolpath clsf $pts -op BENCH_RASTER -D 16 -r 4 -length 75] \n]
     } finally {
         close $chan
     }
@@ -64,14 +64,14 @@ proc ::bench::Generate {n path} {
 
 # ::bench::Read -- Returns the number of GOTO records of the CLSF file path.
 proc ::bench::Read {path} {
-    set r [::fivax::clsf::open $path]
+    set r [::fivax::clsf open $path]
     set n 0
     try {
-        while {[set rec [::fivax::clsf::next $r]] ne ""} {
+        while {[set rec [$r next]] ne ""} {
             if {[dict get $rec kind] eq "GOTO"} {incr n}
         }
     } finally {
-        ::fivax::clsf::close $r
+        $r destroy
     }
     return $n
 }
@@ -80,37 +80,37 @@ proc ::bench::Read {path} {
 #	Feeds the CLSF file path through a planner for machine with options;
 #	returns the planner's stats.
 proc ::bench::Plan {machine path args} {
-    set h [::fivax::motion::create $machine -msys 1 {*}$args]
-    set r [::fivax::clsf::open $path]
+    set h [::fivax::motion create $machine -msys 1 {*}$args]
+    set r [::fivax::clsf open $path]
     set rapid 0
     set feed 0.0
     set axis {0 0 1}
     try {
-        while {[set rec [::fivax::clsf::next $r]] ne ""} {
+        while {[set rec [$r next]] ne ""} {
             switch -- [dict get $rec kind] {
                 RAPID {set rapid 1}
                 FEDRAT {set feed [dict get $rec value]}
                 TLDATA {
-                    ::fivax::motion::flush $h
-                    ::fivax::motion::setTool $h [dict get $rec length]
+                    $h flush
+                    $h setTool [dict get $rec length]
                 }
                 MSYS {
-                    ::fivax::motion::setFrame $h [dict get $rec origin] \
-                        [dict get $rec xaxis] [dict get $rec yaxis]
+                    $h setFrame [dict get $rec origin] [dict get $rec xaxis] [dict get $rec yaxis]
                 }
                 GOTO {
                     if {[llength [dict get $rec axis]]} {set axis [dict get $rec axis]}
-                    ::fivax::motion::add $h [expr {$rapid ? "rapid" : "feed"}] \
+                    $h add [expr {$rapid ? "rapid" : "feed"}] \
                         [dict get $rec point] $axis $feed [dict get $rec line]
                     set rapid 0
                 }
             }
         }
-        ::fivax::motion::flush $h
+        $h flush
+        return [$h stats]
     } finally {
-        ::fivax::clsf::close $r
+        $r destroy
+        $h destroy
     }
-    ::fivax::motion::stats $h
 }
 
 # ::bench::Replay -- Runs tools/replay.tcl on path for machineFile into a temporary NC file.
@@ -171,21 +171,21 @@ proc ::bench::Fmt {v} {
 # ::bench::main -- Generates the file, measures every row, prints the table.
 proc ::bench::main {argv} {
     variable options
-    variable usage
     variable rows
     variable ::root
     try {
-        set opts [::cmdline::getoptions argv $options $usage]
-    } trap {CMDLINE USAGE} {msg} {
-        puts $msg
-        exit 0
-    } trap {CMDLINE} {msg} {
+        lassign [::fivax::opts argv $options $argv bench] opts rest
+    } trap {FIVAX OPTION} {msg} {
         puts stderr $msg
         exit 1
     }
-    set machineFile [dict get $opts machine]
+    if {[dict get $opts -help] || [llength $rest]} {
+        puts "usage: tclsh tools/bench.tcl ?options?\n\nMeasures planner speed on a generated CL file.\nOptions:\n[::fivax::opts help $options]"
+        exit [expr {[llength $rest] > 0}]
+    }
+    set machineFile [dict get $opts -machine]
     if {$machineFile eq ""} {set machineFile [file join $root machines hh-tilt45.tcl]}
-    set machine [::fivax::machine::load $machineFile]
+    set machine [::fivax::machine load $machineFile]
     set dir [file join [expr {[info exists ::env(TMPDIR)] ? $::env(TMPDIR) : "/tmp"}] \
         fivax-bench-[pid]]
     file mkdir $dir
@@ -193,7 +193,7 @@ proc ::bench::main {argv} {
     set f [dict create]
     try {
         set t0 [clock microseconds]
-        set n [Generate [dict get $opts points] $cl]
+        set n [Generate [dict get $opts -points] $cl]
         dict set f points $n
         dict set f generate_s [expr {([clock microseconds] - $t0) / 1e6}]
         puts stderr "bench: $n points on [dict get $machine name] ([format %.1f [dict get $f generate_s]] s to generate)"
@@ -201,7 +201,7 @@ proc ::bench::main {argv} {
         dict set f greedy_us [Us $n {set g [Plan $machine $cl -rotary greedy -tol 0]}]
         dict set f optimal_us [Us $n {set o [Plan $machine $cl -rotary optimal -tol 0]}]
         dict set f lin_us [Us $n {set l [Plan $machine $cl -rotary optimal]}]
-        if {![dict get $opts noreplay]} {
+        if {![dict get $opts -noreplay]} {
             dict set f replay_us [Us $n {Replay $machineFile $cl}]
         }
         dict set f inserted [dict get $l inserted]
@@ -219,7 +219,7 @@ proc ::bench::main {argv} {
         set was [expr {[dict exists $base $key] ? [dict get $base $key] : ""}]
         puts [format "%-40s %12s %12s" $label [Fmt $now] [Fmt $was]]
     }
-    if {[dict get $opts save]} {
+    if {[dict get $opts -save]} {
         Save $baseFile $f "$n points, [dict get $machine name], Tcl [info patchlevel],\
             [clock format [clock seconds] -format %Y-%m-%d]"
         puts stderr "bench: baseline saved to $baseFile"

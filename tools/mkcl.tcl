@@ -1,6 +1,6 @@
 # mkcl.tcl --
 #	Regenerates the bundled synthetic CL samples in tests/data/ from
-#	lib/toolpath.tcl, and prints one summary line per file (points, largest
+#	tools/lib/toolpath.tcl, and prints one summary line per file (points, largest
 #	tool-axis angle off +Z).
 #
 #	tclsh tools/mkcl.tcl ?outdir?     (default: tests/data of this checkout)
@@ -10,9 +10,7 @@ package require Tcl 8.6
 set root [file dirname [file dirname [file normalize [info script]]]]
 set auto_path [linsert $auto_path 0 [file join $root lib]]
 package require fivax 0.1
-if {![namespace exists ::fivax::toolpath]} {
-    source [file join $root lib toolpath.tcl]
-}
+source [file join $root tools lib toolpath.tcl]
 
 namespace eval ::mkcl {
     # Sample files: name, path generator command, clsf options.
@@ -53,7 +51,7 @@ proc ::mkcl::MaxTilt {pts} {
         set a [::fivax::vec angle {0 0 1} [lindex $pt 1]]
         if {$a > $max} {set max $a}
     }
-    expr {$max * 180.0 / acos(-1)}
+    ::fivax::num::deg $max
 }
 
 # main -- Writes every sample into argv's directory (default tests/data).

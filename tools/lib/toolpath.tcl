@@ -1,16 +1,16 @@
 # toolpath.tcl --
-#	CL path geometry: circular and helical arcs as points within a chord
-#	tolerance, and synthetic five-axis CL data: the example surface S(u,v) of
-#	kinematics.md section 11, tool tip and axis of a toroidal end mill at a
-#	contact point, a zig-zag raster over S, simple sweep paths that exercise
-#	the rotary axes (winding, the +Z pole), and NX-style CLSF text for them.
+#	Synthetic five-axis CL data for the tools and the tests (not loaded by
+#	the post): the example surface S(u,v) of kinematics.md section 11, tool
+#	tip and axis of a toroidal end mill at a contact point, a zig-zag
+#	raster over S, simple sweep paths that exercise the rotary axes
+#	(winding, the +Z pole), and NX-style CLSF text for them. Needs the
+#	fivax package (vec, num, opts).
 #
 #	Points are {x y z} lists in mm; a CL point is {P t}: tool tip P and unit
 #	tool axis t (tip towards spindle), as NX writes them. Angles given to
 #	torusCL are radians; options of raster and sweep are degrees.
-#	Errors are {FIVAX TOOLPATH <detail>}:
-#	  OPTION  unknown option or missing option value
-#	  VALUE   an option or argument that is not a valid number or word
+#	Errors are {FIVAX OPTION ...} for options and {FIVAX TOOLPATH <detail>}:
+#	  VALUE   an argument that is not a valid number
 #	  TOOL    cutter dimensions out of range (D > 0, 0 <= r <= D/2)
 #	  LEAD    lead angle not inside (-90, 90) degrees
 #	  FRAME   n or tau not unit, or not orthogonal to each other
@@ -18,9 +18,9 @@
 #	  EMPTY   clsf called with no points
 
 namespace eval ::fivax::toolpath {
-    namespace export surface partials normal torusCL raster sweep clsf arc
-    namespace ensemble create
-    variable Pi 3.141592653589793
+    namespace export surface partials normal torusCL raster sweep clsf
+    namespace ensemble create -prefixes 0
+    namespace upvar ::fivax::num pi Pi
 }
 
 # ::fivax::toolpath::surface --
@@ -81,9 +81,9 @@ proc ::fivax::toolpath::Slopes {u v} {
 #	Errors: TOOL, LEAD (|beta| >= pi/2), FRAME (n, tau not orthonormal).
 proc ::fivax::toolpath::torusCL {cc n tau D r lead tilt} {
     variable Pi
-    CheckVec cc $cc
-    CheckVec n $n
-    CheckVec tau $tau
+    set cc [CheckVec cc $cc]
+    set n [CheckVec n $n]
+    set tau [CheckVec tau $tau]
     foreach name {D r lead tilt} {set $name [Real $name [set $name]]}
     CheckTool $D $r
     if {!(abs($lead) < $Pi / 2.0)} {
@@ -127,17 +127,19 @@ proc ::fivax::toolpath::torusCL {cc n tau D r lead tilt} {
 #	is the unit partial derivative along the pass, signed with the feed.
 proc ::fivax::toolpath::raster {args} {
     variable Pi
-    set o [Options raster {
-        -D {real 16} -r {real 4} -lead {real 10} -tilt {real 0}
-        -passes {count 10} -step {count 100} -along {word u {u v}}
-    } $args]
+    set o [::fivax::opts::parse {
+        {-D real 16 MM "cutter diameter"} {-r real 4 MM "corner radius"}
+        {-lead real 10 DEG "lead angle"} {-tilt real 0 DEG "tilt angle"}
+        {-passes {int min 1} 10 N "passes"} {-step {int min 1} 100 N "points per pass"}
+        {-along {enum u v} u DIR "feed direction"}
+    } $args raster]
     dict with o {}
     CheckTool ${-D} ${-r}
     if {${-step} < 2} {
         ::fivax::Fail TOOLPATH VALUE "-step must be at least 2, got ${-step}"
     }
-    set beta [expr {${-lead} * $Pi / 180.0}]
-    set theta [expr {${-tilt} * $Pi / 180.0}]
+    set beta [::fivax::num::rad ${-lead}]
+    set theta [::fivax::num::rad ${-tilt}]
     set out {}
     for {set k 0} {$k < ${-passes}} {incr k} {
         set w [expr {${-passes} == 1 ? 0.5 : double($k) / (${-passes} - 1)}]
@@ -184,18 +186,18 @@ proc ::fivax::toolpath::raster {args} {
 #	                  for even n the second half has one step more.
 #	Tip and axis move with the same fraction i/(n-1) of the path.
 proc ::fivax::toolpath::sweep {args} {
-    variable Pi
-    set o [Options sweep {
-        -shape {word circle {point line circle}} -n {count 360} -R {real 50}
-        -center {pair {0 0}} -z {real 0} -phase {real 0} -turns {real 1}
-        -pitch {real 0} -heading {real 0} -tilt {real 30} -from {real 0}
-        -to {real 360} -through-singular {bool 0}
-    } $args]
+    set o [::fivax::opts::parse {
+        {-shape {enum point line circle} circle SHAPE "tip path"} {-n {int min 1} 360 N "points"}
+        {-R real 50 MM "radius"} {-center {reals 2} {0 0} "X Y" "centre"} {-z real 0 MM "height"}
+        {-phase real 0 DEG "first position angle"} {-turns real 1 N "turns"}
+        {-pitch real 0 MM "rise per turn"} {-heading real 0 DEG "line direction"}
+        {-tilt real 30 DEG "axis tilt"} {-from real 0 DEG "first azimuth"}
+        {-to real 360 DEG "last azimuth"} {-through-singular bool 0 "" "cross the pole"}
+    } $args sweep]
     dict with o {}
     if {${-n} < 2} {
         ::fivax::Fail TOOLPATH VALUE "-n must be at least 2, got ${-n}"
     }
-    set d2r [expr {$Pi / 180.0}]
     lassign ${-center} cx cy
     set last [expr {${-n} - 1}]
     set pole [expr {$last / 2}]
@@ -205,28 +207,28 @@ proc ::fivax::toolpath::sweep {args} {
         switch -exact -- ${-shape} {
             point {set p [list $cx $cy ${-z}]}
             line {
-                set h [expr {${-heading} * $d2r}]
+                set h [::fivax::num::rad ${-heading}]
                 set l [expr {${-R} * (2.0 * $s - 1.0)}]
                 set p [list [expr {$cx + $l * cos($h)}] [expr {$cy + $l * sin($h)}] ${-z}]
             }
             circle {
-                set a [expr {(${-phase} + 360.0 * ${-turns} * $s) * $d2r}]
+                set a [::fivax::num::rad [expr {${-phase} + 360.0 * ${-turns} * $s}]]
                 set p [list [expr {$cx + ${-R} * cos($a)}] [expr {$cy + ${-R} * sin($a)}] \
                            [expr {${-z} + ${-pitch} * ${-turns} * $s}]]
             }
         }
         if {${-through-singular}} {
-            set f [expr {${-from} * $d2r}]
+            set f [::fivax::num::rad ${-from}]
             if {$i == $pole} {
                 set a 0.0
             } elseif {$i < $pole} {
-                set a [expr {${-tilt} * double($pole - $i) / $pole * $d2r}]
+                set a [::fivax::num::rad [expr {${-tilt} * double($pole - $i) / $pole}]]
             } else {
-                set a [expr {-${-tilt} * double($i - $pole) / ($last - $pole) * $d2r}]
+                set a [::fivax::num::rad [expr {-${-tilt} * double($i - $pole) / ($last - $pole)}]]
             }
         } else {
-            set f [expr {(${-from} + (${-to} - ${-from}) * $s) * $d2r}]
-            set a [expr {${-tilt} * $d2r}]
+            set f [::fivax::num::rad [expr {${-from} + (${-to} - ${-from}) * $s}]]
+            set a [::fivax::num::rad ${-tilt}]
         }
         set t [list [expr {sin($a) * cos($f)}] [expr {sin($a) * sin($f)}] [expr {cos($a)}]]
         lappend out [list $p $t]
@@ -248,33 +250,36 @@ proc ::fivax::toolpath::sweep {args} {
 #	first GOTO always has them). "-0.0000" is never written.
 #	Errors: EMPTY, AXIS, VALUE, OPTION.
 proc ::fivax::toolpath::clsf {points args} {
-    set o [Options clsf {
-        -op {name VARIABLE_CONTOUR} -tool {name ""} -number {count 1}
-        -D {real 16} -r {real 4} -length {real 75} -rpm {real 8000}
-        -feed {real 1000} -clearance {real 50}
-    } $args]
+    set o [::fivax::opts::parse {
+        {-op word VARIABLE_CONTOUR NAME "operation name"} {-tool {maybe word} {} NAME "tool name"}
+        {-number {int min 1} 1 N "tool number"} {-D real 16 MM "diameter"}
+        {-r real 4 MM "corner radius"} {-length real 75 MM "tool length"}
+        {-rpm real 8000 RPM "spindle speed"} {-feed real 1000 MMPM "feed"}
+        {-clearance real 50 MM "approach distance"}
+    } $args clsf]
     dict with o {}
     CheckTool ${-D} ${-r}
     if {![llength $points]} {
         ::fivax::Fail TOOLPATH EMPTY "no CL points to write"
     }
-    foreach pt $points {
+    set points [lmap pt $points {
         if {[llength $pt] != 2} {
             ::fivax::Fail TOOLPATH VALUE "CL point must be {P t}, got \"$pt\""
         }
-        lassign $pt p t
-        CheckVec point $p
-        CheckVec axis $t
+        lassign $pt p0 t0
+        set p [CheckVec point $p0]
+        set t [CheckVec axis $t0]
         if {abs([::fivax::vec norm $t] - 1.0) > 1e-6} {
-            ::fivax::Fail TOOLPATH AXIS "tool axis is not a unit vector: $t"
+            ::fivax::Fail TOOLPATH AXIS "tool axis is not a unit vector: $t0"
         }
-    }
+        list $p $t
+    }]
     if {${-tool} eq ""} {
         set -tool [format MILL_D%s_R%s [Short ${-D}] [Short ${-r}]]
     }
     set lines {}
     lappend lines "TOOL PATH/${-op},TOOL,${-tool}" \
-        "TLDATA/MILL,[Fmt ${-D} 4],[Fmt ${-r} 4],[Fmt ${-length} 4],0.0000,0.0000" \
+        "TLDATA/MILL,[::fivax::num::fixed ${-D} 4],[::fivax::num::fixed ${-r} 4],[::fivax::num::fixed ${-length} 4],0.0000,0.0000" \
         "MSYS/0.0000,0.0000,0.0000,1.0000000,0.0000000,0.0000000,0.0000000,1.0000000,0.0000000" \
         "\$\$ centerline data" \
         "LOAD/TOOL,${-number}" \
@@ -284,7 +289,7 @@ proc ::fivax::toolpath::clsf {points args} {
     set lastAxis ""
     lassign [lindex $points 0] p t
     lappend lines [Goto [::fivax::vec add $p [::fivax::vec scale ${-clearance} $t]] $t lastAxis]
-    lappend lines "FEDRAT/MMPM,[Fmt ${-feed} 4]"
+    lappend lines "FEDRAT/MMPM,[::fivax::num::fixed ${-feed} 4]"
     foreach pt $points {
         lassign $pt p t
         lappend lines [Goto $p $t lastAxis]
@@ -301,23 +306,13 @@ proc ::fivax::toolpath::Goto {p t lastVar} {
     upvar 1 $lastVar last
     lassign $p x y z
     lassign $t i j k
-    set line "GOTO/[Fmt $x 4],[Fmt $y 4],[Fmt $z 4]"
-    set axis "[Fmt $i 7],[Fmt $j 7],[Fmt $k 7]"
+    set line "GOTO/[::fivax::num::fixed $x 4],[::fivax::num::fixed $y 4],[::fivax::num::fixed $z 4]"
+    set axis "[::fivax::num::fixed $i 7],[::fivax::num::fixed $j 7],[::fivax::num::fixed $k 7]"
     if {$axis ne $last} {
         append line , $axis
         set last $axis
     }
     return $line
-}
-
-# ::fivax::toolpath::Fmt --
-#	Returns x with the given number of decimals, never as negative zero.
-proc ::fivax::toolpath::Fmt {x digits} {
-    set s [format %.*f $digits $x]
-    if {[string index $s 0] eq "-" && [string trim $s -0.] eq ""} {
-        set s [string range $s 1 end]
-    }
-    return $s
 }
 
 # ::fivax::toolpath::Short --
@@ -326,93 +321,32 @@ proc ::fivax::toolpath::Short {x} {
     if {$x == round($x) && abs($x) < 1e15} {
         return [format %lld [expr {round($x)}]]
     }
-    Fmt $x 4
-}
-
-# ::fivax::toolpath::Options --
-#	Returns a dict option -> value from the defaults in spec, overridden by
-#	the -name value pairs in argList. spec maps each option to {type
-#	default ?choices?}; types: real, count (integer >= 1), bool, word (one
-#	of choices), name (text without commas or line breaks), pair (2 reals).
-proc ::fivax::toolpath::Options {cmd spec argList} {
-    set o [dict create]
-    dict for {name def} $spec {dict set o $name [lindex $def 1]}
-    if {[llength $argList] % 2} {
-        ::fivax::Fail TOOLPATH OPTION \
-            "value for \"[lindex $argList end]\" missing: $cmd takes -option value pairs"
-    }
-    foreach {name value} $argList {
-        if {![dict exists $spec $name]} {
-            set names [dict keys $spec]
-            ::fivax::Fail TOOLPATH OPTION "bad option \"$name\": must be\
-                [join [lrange $names 0 end-1] ", "], or [lindex $names end]"
-        }
-        lassign [dict get $spec $name] type - choices
-        switch -exact -- $type {
-            real {
-                set x [::fivax::parseReal $value]
-                if {$x eq ""} {BadValue $name $value "a number"}
-            }
-            count {
-                if {![regexp {^\s*\+?\d+\s*$} $value]
-                        || [scan $value %d x] != 1 || $x < 1} {
-                    BadValue $name $value "a positive integer"
-                }
-            }
-            bool {
-                if {$value ni {0 1}} {BadValue $name $value "0 or 1"}
-                set x $value
-            }
-            word {
-                if {$value ni $choices} {BadValue $name $value "one of: [join $choices {, }]"}
-                set x $value
-            }
-            name {
-                if {$value eq "" || [regexp {[,\r\n]} $value]} {
-                    BadValue $name $value "a name without commas"
-                }
-                set x $value
-            }
-            pair {
-                set x {}
-                if {[string is list $value] && [llength $value] == 2} {
-                    set x [lmap c $value {::fivax::parseReal $c}]
-                }
-                if {[llength $x] != 2 || "" in $x} {BadValue $name $value "two numbers"}
-            }
-        }
-        dict set o $name $x
-    }
-    return $o
-}
-
-# ::fivax::toolpath::BadValue -- Raises {FIVAX TOOLPATH VALUE} for option name.
-proc ::fivax::toolpath::BadValue {name value want} {
-    ::fivax::Fail TOOLPATH VALUE "bad value \"$value\" for $name: must be $want"
+    ::fivax::num::fixed $x 4
 }
 
 # ::fivax::toolpath::Real --
 #	Returns x as a double (decimal, so 017 is 17.0); raises VALUE unless x
 #	is a finite number.
 proc ::fivax::toolpath::Real {name x} {
-    set v [::fivax::parseReal $x]
+    set v [::fivax::num::parse $x]
     if {$v eq ""} {
         ::fivax::Fail TOOLPATH VALUE "bad $name \"$x\": must be a finite number"
     }
     return $v
 }
 
-# ::fivax::toolpath::CheckVec -- Raises VALUE unless v is 3 finite numbers.
+# ::fivax::toolpath::CheckVec --
+#	Returns v as 3 doubles (decimal: 017 is 17.0); raises VALUE unless it
+#	is 3 finite numbers.
 proc ::fivax::toolpath::CheckVec {name v} {
-    set ok [expr {[string is list $v] && [llength $v] == 3}]
-    if {$ok} {
-        foreach c $v {
-            if {![string is double -strict $c] || !(abs($c) < Inf)} {set ok 0}
-        }
+    set out {}
+    if {[string is list $v] && [llength $v] == 3} {
+        set out [lmap c $v {::fivax::num::parse $c}]
     }
-    if {!$ok} {
+    if {[llength $out] != 3 || "" in $out} {
         ::fivax::Fail TOOLPATH VALUE "bad $name \"$v\": must be 3 finite numbers"
     }
+    return $out
 }
 
 # ::fivax::toolpath::CheckTool -- Raises TOOL unless D > 0 and 0 <= r <= D/2.
@@ -422,41 +356,3 @@ proc ::fivax::toolpath::CheckTool {D r} {
     }
 }
 
-## Ready
-
-# ::fivax::toolpath::arc --
-#	Returns the points after start up to and including end of an arc about
-#	the line through center along unit axis, turning clockwise (sense -1)
-#	or counter-clockwise (sense 1) about axis, plus turns extra full turns,
-#	with chord error at most tol (mm). Radius and the axial height vary
-#	linearly from start to end (helixes, slightly inconsistent CL data).
-#	start = end is a full circle.
-proc ::fivax::toolpath::arc {start end center axis sense turns tol} {
-    variable Pi
-    set n [::fivax::vec::unit $axis]
-    set hs [::fivax::vec::dot [::fivax::vec::sub $start $center] $n]
-    set he [::fivax::vec::dot [::fivax::vec::sub $end $center] $n]
-    set rs [::fivax::vec::sub [::fivax::vec::sub $start $center] [::fivax::vec::scale $hs $n]]
-    set re [::fivax::vec::sub [::fivax::vec::sub $end $center] [::fivax::vec::scale $he $n]]
-    set r0 [::fivax::vec::norm $rs]
-    set r1 [::fivax::vec::norm $re]
-    if {$r0 < 1e-9 || $r1 < 1e-9} {return [list $end]}
-    # Signed angle from rs to re about n, then taken in the arc's sense.
-    set a [expr {atan2([::fivax::vec::dot [::fivax::vec::cross $rs $re] $n], [::fivax::vec::dot $rs $re])}]
-    set sweep [expr {$sense > 0 ? $a : -$a}]
-    if {$sweep < 1e-9} {set sweep [expr {$sweep + 2.0 * $Pi}]}
-    set sweep [expr {$sweep + 2.0 * $Pi * $turns}]
-    set rmax [expr {max($r0, $r1)}]
-    set step [expr {$tol >= $rmax ? $Pi / 2.0 : 2.0 * acos(1.0 - $tol / $rmax)}]
-    set count [expr {max(1, int(ceil($sweep / $step)))}]
-    set u [::fivax::vec::scale [expr {1.0 / $r0}] $rs]
-    set out {}
-    for {set i 1} {$i < $count} {incr i} {
-        set f [expr {double($i) / $count}]
-        set dir [::fivax::vec::rotate $n [expr {$sense > 0 ? $f * $sweep : -$f * $sweep}] $u]
-        set radial [::fivax::vec::scale [expr {$r0 + $f * ($r1 - $r0)}] $dir]
-        set axial [::fivax::vec::scale [expr {$hs + $f * ($he - $hs)}] $n]
-        lappend out [::fivax::vec::add $center [::fivax::vec::add $radial $axial]]
-    }
-    lappend out $end
-}

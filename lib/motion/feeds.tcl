@@ -1,0 +1,37 @@
+# feeds.tcl --
+#	(motion) Feeds: the machine's feed clamp and the feed of each cutting
+#	move (spec/kinematics.md section 8). A move with rotary motion gets
+#	inverse time (F = feed / tip path length, 1/min, at most the machine's
+#	inverse_time_max), or with -feed dpm the combined feed of all axes
+#	(mm and degrees) that keeps the block's time; linear moves and -feed
+#	direct get the tip feed in mm/min.
+
+oo::define ::fivax::motion::Planner {
+    # Returns feed (mm/min) clamped to the machine's feed_min..feed_max.
+    method FeedClamp {feed} {
+        expr {$feed < $S(feedMin) ? $S(feedMin) : $feed > $S(feedMax) ? $S(feedMax) : double($feed)}
+    }
+
+    # Returns {mode feed rate tip} for the cutting move from point record
+    # a to b at tip feed f (mm/min): mode direct (rate f) when no rotary
+    # moves or -feed direct; else inverse (rate f/d, d the tip path length
+    # in the workpiece frame, at most inverse_time_max), or dpm (rate: the
+    # combined length sqrt(dX^2+dY^2+dZ^2+dA^2+dB^2) (mm, deg) per block
+    # time d/f, clamped to feed_min..feed_max).
+    method FeedOf {a b f} {
+        lassign [lindex $a 0] X0 Y0 Z0 a1 a2
+        lassign [lindex $b 0] X1 Y1 Z1 b1 b2
+        set d [::fivax::vec::norm [::fivax::vec::sub [lindex $b 1] [lindex $a 1]]]
+        if {$S(feed) eq "direct" || (abs($b1 - $a1) <= 1e-9 && abs($b2 - $a2) <= 1e-9)} {
+            return [list direct $f $f $d]
+        }
+        if {$S(feed) eq "inverse"} {
+            return [list inverse $f [expr {$d * $S(itMax) > $f ? $f / $d : $S(itMax)}] $d]
+        }
+        if {$d <= 0} {return [list dpm $f $S(feedMax) $d]}
+        set len [expr {sqrt(($X1 - $X0) ** 2 + ($Y1 - $Y0) ** 2 + ($Z1 - $Z0) ** 2
+                            + [::fivax::num::deg [expr {$b1 - $a1}]] ** 2
+                            + [::fivax::num::deg [expr {$b2 - $a2}]] ** 2)}]
+        list dpm $f [my FeedClamp [expr {$len * $f / $d}]] $d
+    }
+}

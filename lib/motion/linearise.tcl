@@ -1,0 +1,116 @@
+# linearise.tcl --
+#	(motion) Linearisation (spec/kinematics.md section 7): between two
+#	blocks the controller interpolates the joints linearly and the tool tip
+#	leaves the straight CL segment. Each cutting move is checked at the
+#	quarter points of that interpolation (tip against the straight segment,
+#	axis against the great circle) and CL points are inserted (position
+#	linear, axis slerp) until within -tol / -atol. Where a move leaves the
+#	singular cone with another azimuth, the azimuth turns first while the
+#	tip dwells.
+
+oo::define ::fivax::motion::Planner {
+    # Returns the point records after a up to and including b such that
+    # the linear joint interpolation between consecutive ones keeps the
+    # tip within -tol of their straight segment and the axis within -atol
+    # of the great circle of their actual axes (act), checked at the
+    # quarter points. An error e splits the move into about sqrt(e / tol)
+    # pieces (the error of a smooth move shrinks with the square of its
+    # length), each checked in turn, at most maxDepth levels deep. Where
+    # the CL path between a and b runs out of the limits (a piece no
+    # cutting move can do, see Cost), it is halved instead, and the piece
+    # left at the deepest level gets the flag retract.
+    method Linearise {a b depth src} {
+        namespace upvar ::fivax::motion maxDepth maxDepth retractCost retractCost
+        if {$S(tol) <= 0} {return [list $b]}
+        set ctx $S(ctx)
+        lassign $a ja Pa - acta la
+        lassign $b jb Pb - actb lb
+        lassign [dict get $ctx swing] ms1 ms2
+        set ok [expr {[::fivax::motion::Cost $ms1 $ms2 1 [lindex $ja 3] [lindex $ja 4] $la \
+            [lindex $jb 3] [lindex $jb 4] $lb] < $retractCost}]
+        set n 2
+        if {$ok} {
+            lassign [::fivax::kin::interpolationError $S(model) $ja $jb $Pa $Pb $acta $actb \
+                $S(tol) $S(atolCheck)] dp da
+            set e [expr {$dp / $S(tol)}]
+            if {$da / $S(atolCheck) > $e} {set e [expr {$da / $S(atolCheck)}]}
+            if {$e <= 1.0} {return [list $b]}
+            set n [expr {int(ceil(1.1 * sqrt($e)))}]
+            set n [expr {$n < 2 ? 2 : $n > 16 ? 16 : $n}]
+        }
+        if {$depth < $maxDepth} {
+            try {
+                set pts [::fivax::motion::Split $ctx $a $b $n $src]
+                lappend pts $b
+                set out {}
+                set prev $a
+                incr depth
+                foreach p $pts {
+                    lappend out {*}[my Linearise $prev $p $depth $src]
+                    set prev $p
+                }
+                return $out
+            } trap {FIVAX MOTION} {} {
+                # A CL axis in between is out of reach or of the limits.
+            }
+        }
+        if {$ok} {
+            incr S(unresolved)
+            return [list $b]
+        }
+        list [lappend b retract]
+    }
+}
+
+# ::fivax::motion::Split --
+#	Returns the point records to insert between point records a and b:
+#	the CL points at fractions 1/n .. (n-1)/n (position linear, axis
+#	slerp), each with the candidate nearest the joints interpolated there
+#	that both ends reach without a retract. When an end lies in the
+#	singular cone, where the azimuth is free, and its azimuth is not the
+#	one the path leaves it with (see Departure), the azimuth turns there
+#	first: that end's CL point again with the new azimuth (the tool dwells
+#	at the tip while the azimuth turns).
+proc ::fivax::motion::Split {ctx a b n src} {
+    lassign $a ja Pa ta - la
+    lassign $b jb Pb tb - lb
+    lassign $ja - - - a1 a2
+    lassign $jb - - - b1 b2
+    if {abs($b2 - $a2) > 1e-9} {
+        foreach end [list $a $b] other [list $b $a] {
+            lassign $end je P t
+            if {[InCone $ctx $t]} {
+                set c [Quantize $ctx [Departure $ctx $end $other $src]]
+                if {abs($c - [lindex $je 4]) > 1e-9} {
+                    set q1 [HoldTilt $ctx $t [lindex $je 3] $c]
+                    if {$q1 ne ""} {return [list [Record $ctx $P $t $q1 $c -1]]}
+                }
+            }
+        }
+    }
+    set out {}
+    for {set i 1} {$i < $n} {incr i} {
+        set f [expr {double($i) / $n}]
+        set g1 [expr {$a1 + $f * ($b1 - $a1)}]
+        set g2 [expr {$a2 + $f * ($b2 - $a2)}]
+        set t [::fivax::vec::slerp $ta $tb $f]
+        lappend out [Record $ctx [::fivax::vec::lerp $Pa $Pb $f] $t \
+            {*}[Pick $ctx $t $g1 $g2 $la $lb $src]]
+    }
+    return $out
+}
+
+# ::fivax::motion::Departure --
+#	Returns the azimuth with which the CL path leaves point record end
+#	(in the singular cone) towards point record other: that of the exact
+#	candidate nearest other's rotaries at the CL axis ten cone angles away
+#	from end; half-way between their azimuths when other is that close.
+proc ::fivax::motion::Departure {ctx end other src} {
+    lassign $end je - te
+    lassign $other jo - to lo
+    set angle [::fivax::vec::angle $te $to]
+    set step [expr {10.0 * asin(min(1.0, [dict get $ctx sinCone]))}]
+    if {$angle <= $step} {return [expr {0.5 * ([lindex $je 4] + [lindex $jo 4])}]}
+    set t [::fivax::vec::slerp $te $to [expr {$step / $angle}]]
+    lindex [Pick $ctx $t [lindex $jo 3] [lindex $jo 4] $lo $lo $src] 1
+}

@@ -1,0 +1,170 @@
+# moves.tcl --
+#	(motion) From chosen rotary values to move records: the first move of
+#	a program, rapid transfers to a new orientation, retract, reposition
+#	and re-engage where no cutting move can continue, and the statistics
+#	of what was written. Inside the planner a point record is the list
+#	{joints P t act branch ?retract?}: joints {X Y Z q1 q2} (mm, rad, chain
+#	order), the CL point P, t, the tool axis act the rotaries give, and
+#	the branch of the solution.
+
+# ::fivax::motion::Record --
+#	Returns the point record of CL point P, t with rotaries q1 q2 on branch
+#	lab in context ctx; act is t itself outside the singular cone, where
+#	candidates are exact. Rotaries are rounded to the output resolution
+#	first, so that X Y Z absorb the rounding.
+proc ::fivax::motion::Record {ctx P t q1 q2 lab} {
+    set q1 [Quantize $ctx $q1]
+    set q2 [Quantize $ctx $q2]
+    set model [dict get $ctx model]
+    set joints [concat [::fivax::kin::position $model $P [list $q1 $q2]] $q1 $q2]
+    if {![InCone $ctx $t]} {return [list $joints $P $t $t $lab]}
+    list $joints $P $t [lindex [::fivax::kin::forward $model $joints] 1] $lab
+}
+
+oo::define ::fivax::motion::Planner {
+    # Writes CL point (kind P t feed src) with rotaries {q1 q2} on branch
+    # lab after the last written point and returns its moves: the rapid
+    # sequence, the linearised cutting moves, or a retract, reposition and
+    # re-engage.
+    method Emit {kind P t feed src q1 q2 lab} {
+        namespace upvar ::fivax::motion retractCost retractCost
+        set ctx $S(ctx)
+        set b [::fivax::motion::Record $ctx $P $t $q1 $q2 $lab]
+        if {[::fivax::motion::InCone $ctx $t]} {incr S(holds)}
+        if {$S(last) eq ""} {
+            set moves [my First $kind $b $feed $src]
+        } elseif {$kind eq "rapid"} {
+            set moves [my Transfer $S(last) $b $src]
+        } else {
+            lassign [my LastRefs] a1 a2 al
+            lassign [dict get $ctx swing] ms1 ms2
+            if {[::fivax::motion::Cost $ms1 $ms2 1 $a1 $a2 $al $q1 $q2 $lab] < $retractCost} {
+                my CountSwing $a2 $q2 [lindex $S(last) 2] $t
+                set moves [my FeedMoves [my Linearise $S(last) $b 0 $src] $feed $src]
+            } else {
+                set moves [my Retract $S(last) $b [my FeedClamp $feed] $src \
+                    [::fivax::motion::LimitReason $ctx $a1 $a2 $t]]
+            }
+        }
+        my Travel $moves
+        set S(last) $b
+        incr S(moves) [llength $moves]
+        return $moves
+    }
+
+    # Returns a move record (see flush) of the given kind to joints
+    # {X Y Z q1 q2}, writing the axes in write (X Y Z, and R for both
+    # rotaries); feed is {mode feed rate tip} or {} for rapids.
+    method Move {kind joints write P t feed src {tag ""} {note ""}} {
+        lassign [lmap axis $S(axes) {dict get $axis name}] n1 n2
+        lassign $joints X Y Z q1 q2
+        set i [lsearch -exact $write R]
+        if {$i >= 0} {set write [lreplace $write $i $i $n1 $n2]}
+        if {![llength $feed]} {set feed {direct 0 0 0}}
+        lassign $feed mode f rate tip
+        dict create kind $kind axes [list X $X Y $Y Z $Z $n1 $q1 $n2 $q2] write $write \
+            feed $f mode $mode rate $rate tip $tip P $P t $t src $src tag $tag note $note
+    }
+
+    # Returns the moves to the very first point b (a point record): a
+    # rapid rotates first, then moves X Y, then Z; a feed goes straight.
+    method First {kind b feed src} {
+        lassign $b joints P t
+        if {$kind eq "feed"} {
+            set f [my FeedClamp $feed]
+            return [list [my Move feed $joints {X Y Z R} $P $t [list direct $f $f 0.0] $src]]
+        }
+        list [my Move rapid $joints R {} {} {} $src] [my Move rapid $joints {X Y} {} {} {} $src] \
+            [my Move rapid $joints {X Y Z R} $P $t {} $src]
+    }
+
+    # Returns the rapid moves from point record a to point record b. A
+    # change of orientation is sequenced safely: Z up to the safe height
+    # (safe_z, else clearance above the higher end), rotate, X Y, then
+    # down.
+    method Transfer {a b src} {
+        lassign $b joints P t
+        set final [my Move rapid $joints {X Y Z R} $P $t {} $src]
+        lassign [lindex $a 0] pX pY pZ p1 p2
+        lassign $joints X Y Z q1 q2
+        if {abs($q1 - $p1) < 1e-9 && abs($q2 - $p2) < 1e-9} {return [list $final]}
+        set safe $S(safeZ)
+        if {$safe eq ""} {set safe [expr {max($pZ, $Z) + $S(clearance)}]}
+        list [my Move rapid [list $pX $pY $safe $p1 $p2] Z {} {} {} $src] \
+            [my Move rapid [list $pX $pY $safe $q1 $q2] R {} {} {} $src] \
+            [my Move rapid [list $X $Y $safe $q1 $q2] {X Y} {} {} {} $src] $final
+    }
+
+    # Returns the moves from point record a to point record b when no
+    # cutting move can get there: retract along the tool axis by the
+    # clearance, rapid to the new configuration above b (Transfer), and
+    # re-engage along b's tool axis at feed f (mm/min). reason goes into
+    # the note.
+    method Retract {a b f src reason} {
+        incr S(retracts)
+        lassign $a ja Pa ta acta
+        lassign $b jb Pb tb actb lab
+        set c $S(clearance)
+        set Pr [::fivax::vec::add $Pa [::fivax::vec::scale $c $acta]]
+        set jr [concat [::fivax::kin::position $S(model) $Pr [lrange $ja 3 4]] [lrange $ja 3 4]]
+        set Pe [::fivax::vec::add $Pb [::fivax::vec::scale $c $actb]]
+        set je [concat [::fivax::kin::position $S(model) $Pe [lrange $jb 3 4]] [lrange $jb 3 4]]
+        set moves [list [my Move retract $jr {X Y Z} $Pr $ta {} $src "" $reason]]
+        lappend moves {*}[my Transfer [list $jr $Pr $ta $acta] [list $je $Pe $tb $actb] $src]
+        lappend moves [my Move feed $jb {X Y Z R} $Pb $tb [list direct $f $f $c] $src reengage]
+    }
+
+    # Returns the cutting moves through the point records pts (the last
+    # one the CL point, the others inserted) from the last written point,
+    # with the feed of each move (see FeedOf); a record flagged retract is
+    # reached by a retract instead.
+    method FeedMoves {pts feed src} {
+        set f [my FeedClamp $feed]
+        set prev $S(last)
+        set moves {}
+        set last [expr {[llength $pts] - 1}]
+        incr S(inserted) $last
+        set i 0
+        foreach p $pts {
+            lassign $p joints P t - - flag
+            if {$flag eq "retract"} {
+                lassign [lindex $prev 0] - - - a1 a2
+                lappend moves {*}[my Retract $prev $p $f $src \
+                    [::fivax::motion::LimitReason $S(ctx) $a1 $a2 $t]]
+            } else {
+                lappend moves [my Move feed $joints {X Y Z R} $P $t [my FeedOf $prev $p $f] $src \
+                    [expr {$i < $last ? "inserted" : ""}]]
+            }
+            set prev $p
+            incr i
+        }
+        return $moves
+    }
+
+    # Adds the rotary travel of moves to the statistics.
+    method Travel {moves} {
+        lassign [lmap axis $S(axes) {dict get $axis name}] n1 n2
+        if {$S(last) eq ""} {
+            set p1 ""
+        } else {
+            lassign [lindex $S(last) 0] - - - p1 p2
+        }
+        foreach move $moves {
+            set q1 [dict get $move axes $n1]
+            set q2 [dict get $move axes $n2]
+            if {$p1 ne ""} {
+                set S(travel) [expr {$S(travel) + abs($q1 - $p1) + abs($q2 - $p2)}]
+            }
+            set p1 $q1
+            set p2 $q2
+        }
+    }
+
+    # Counts a singular swing: the azimuth turns from a2 to b2 by more than
+    # -swing while the CL axis turns from ta to tb by less than that.
+    method CountSwing {a2 b2 ta tb} {
+        if {abs($b2 - $a2) > $S(swingRad) && [::fivax::vec::angle $ta $tb] < $S(swingRad)} {
+            incr S(swings)
+        }
+    }
+}

@@ -1,0 +1,450 @@
+# plan.tcl --
+#	The motion planner (spec/kinematics.md sections 6 to 8): turns CL
+#	points (tool tip and axis in the workpiece frame) into neutral machine
+#	move records. One namespace, ::fivax::motion, over the files of
+#	lib/motion/:
+#	    plan.tcl        the Planner API, whole-path choice and windows
+#	    candidates.tcl  candidate rotary values: a pure function of the
+#	                    planning context (model, limits), tool axis and
+#	                    references
+#	    moves.tcl       move records: approach, transfer, retract
+#	    linearise.tcl   splitting moves until the joint interpolation
+#	                    stays within tolerance
+#	    feeds.tcl       feed clamp and the feed of each cutting move
+#
+#	Choice. A cutting move may go from one candidate to the next when both
+#	lie on the same branch (or one is in the singular cone, where branches
+#	meet) and no axis turns more than the machine's max_swing; otherwise it
+#	needs a retract. Cost = w1 |dq1| + w2 |dq2| (radians, -weights) plus
+#	retractCost per retract, so the fewest retracts win, then the least
+#	weighted travel. 'optimal' (default) picks the whole sequence by dynamic
+#	programming over the candidate graph; 'greedy' takes at each point the
+#	candidate with the smallest tilt change, then azimuth change.
+#
+#	Windows. The optimiser keeps at most -window CL points. When the buffer
+#	is full it writes the prefix up to the point where the best paths to all
+#	current candidates merge: any whole-operation optimum passes through one
+#	of those candidates, so that prefix is exactly the one the optimum has.
+#	If they have not merged over half the window (two configurations cost
+#	the same all along, e.g. the two branches on a continuous azimuth), it
+#	writes the first half along the best path, still with at least half a
+#	window of look-ahead, and restarts the tables from there. Either way
+#	every written move is checked against the limits and continues from the
+#	last written state, and memory stays bounded by the window.
+#
+#	Angles in radians inside; options and statistics in degrees.
+#	Errors: {FIVAX OPTION ...} for options, {FIVAX MOTION <DETAIL>}.
+
+namespace eval ::fivax::motion {
+    namespace export create
+    namespace ensemble create -prefixes 0
+    namespace upvar ::fivax::num pi pi
+    # Cost of one retract (radian-equivalents of travel): far more than the
+    # travel of any window (a few turns per point at most, 100000 points),
+    # so the optimiser first minimises retracts, then travel.
+    variable retractCost 1e6
+    # Tie-breaks at the first point of a path: per violated sign
+    # preference, and per radian away from zero (smallest values first).
+    variable preferCost 1e-6
+    variable zeroCost 1e-9
+    # Linearisation splits a cutting move at most this many levels deep.
+    variable maxDepth 12
+    # The planner's options (see ::fivax::opts).
+    variable Options {
+        {-table-offset {maybe vec3} {} "X Y Z"
+            "workpiece-frame position of the table reference point (default: the machine's table_offset)"}
+        {-msys bool 0 "" "express the CL data in the frame of the MSYS record"}
+        {-feed {enum inverse direct dpm} inverse MODE
+            "feed on moves with rotary motion: inverse (G93 inverse time), direct (mm/min) or dpm (degrees per minute)"}
+        {-rotary {enum optimal greedy} optimal CHOICE
+            "rotary solution choice: optimal (whole path) or greedy (point by point)"}
+        {-on-limit {enum retract error} retract ACTION
+            "no in-limit continuation: retract (retract, reposition, re-engage) or error"}
+        {-tol {real min 0} 0.01 MM "linearisation tolerance of the tool tip (0: no linearisation)"}
+        {-atol {real min 0} 0.05 DEG "linearisation tolerance of the tool axis (0: not checked)"}
+        {-cone {real min 0} 0.0001 DEG "half-angle of the singular cone, where the azimuth is held"}
+        {-swing {real min 0} 10 DEG "azimuth swing threshold counted as a singular swing"}
+        {-clearance {maybe real min 0} {} MM
+            "retract distance along the tool axis (default: the machine's clearance)"}
+        {-weights {reals 2 gt 0} {1 1} "W1 W2" "travel weights of the tilt and azimuth axes"}
+        {-window {int min 2 max 100000} 4000 N
+            "CL points the optimiser holds at most (about 1.5 kB each)"}
+        {-angle-step {real min 0} 0 DEG
+            "output resolution of the rotary words: rotaries are rounded to it before X Y Z are computed (0: exact)"}
+    }
+}
+
+# ::fivax::motion::create --
+#	Returns a new Planner object for machine (a fivax::machine dict);
+#	options as in the Options table. Destroy it with "$planner destroy".
+proc ::fivax::motion::create {machine args} {
+    variable Options
+    Planner new $machine [::fivax::opts::parse $Options $args "motion create"]
+}
+
+oo::class create ::fivax::motion::Planner {
+    # S: the planner's state; the keys are listed in the constructor.
+    variable S
+
+    # Sets up the planner for machine with the parsed option dict opts.
+    constructor {machine opts} {
+        namespace upvar ::fivax::motion pi pi
+        set S(machine) $machine
+        set S(name) [dict get $machine name]
+        dict for {opt value} $opts {set S([string range $opt 1 end]) $value}
+        if {$S(clearance) eq ""} {set S(clearance) [dict get $machine clearance]}
+        foreach {key name} {feedMin feed_min feedMax feed_max itMax inverse_time_max
+            safeZ safe_z} {
+            set S($key) [dict get $machine $name]
+        }
+        # -atol 0: no check of the tool axis between blocks
+        set S(atolCheck) [expr {$S(atol) > 0 ? [::fivax::num::rad $S(atol)] : Inf}]
+        set S(swingRad) [::fivax::num::rad $S(swing)]
+        lassign $S(weights) S(w1) S(w2)
+        # Per-axis data in chain order (tilt, azimuth) for the candidates.
+        set S(axes) {}
+        foreach axis [dict get $machine chain] {
+            set ms [dict get $machine max_swing]
+            if {[dict get $axis rollover]} {set ms [expr {min($ms, $pi - 1e-9)}]}
+            set min [dict get $axis min]
+            set max [dict get $axis max]
+            set cont [dict get $axis continuous]
+            lappend S(axes) [dict create name [dict get $axis name] min $min max $max \
+                continuous $cont unlimited [expr {$cont && $max - $min > 1e299}] \
+                rollover [dict get $axis rollover] prefer [dict get $axis prefer] swing $ms]
+        }
+        set S(frame) {}
+        array set S {last "" buf {} pathStart 1 points 0 moves 0 travel 0.0
+            inserted 0 retracts 0 holds 0 swings 0 unresolved 0 forced 0}
+        my setTool [dict get $machine tool_length]
+    }
+
+    # Rebuilds the kinematic model for a tool of length len (mm). Call
+    # flush first: points still held would be posted for the new tool.
+    # Errors: {FIVAX MOTION STATE} while points are held.
+    method setTool {len} {
+        if {[llength $S(buf)]} {
+            ::fivax::Fail MOTION STATE "setTool with [llength $S(buf)] CL points held: flush first"
+        }
+        set model [::fivax::kin::model $S(machine) $len $S(table-offset)]
+        set S(toolLength) $len
+        set S(ctx) [::fivax::motion::Context $model $S(name) $S(axes) $S(cone) $S(angle-step)]
+        set S(model) $model
+    }
+
+    # Sets the MSYS frame (origin and unit X, Y axes of the MCS in absolute
+    # coordinates); CL data are mapped through it when -msys is on.
+    method setFrame {origin xaxis yaxis} {
+        set S(frame) [list $origin $xaxis $yaxis [::fivax::vec::cross $xaxis $yaxis]]
+    }
+
+    # Marks the start of an operation: its first point follows the
+    # machine's sign preference where that costs nothing. Returns the moves
+    # still held (as flush).
+    method startPath {} {
+        set moves [my flush]
+        set S(pathStart) 1
+        return $moves
+    }
+
+    # Adds one CL point: kind rapid|feed, tip P and axis t (CL frame), feed
+    # (mm/min, ignored for rapids), src (FILE:LINE for messages). Returns
+    # the move records ready to be written, possibly none while the
+    # optimiser's window fills (see flush).
+    # Errors: {FIVAX MOTION UNREACHABLE}, {FIVAX MOTION LIMIT}.
+    method add {kind P t feed src} {
+        lassign [my ToWork $P $t] P t
+        set t [::fivax::vec::unit $t]
+        incr S(points)
+        if {$S(rotary) eq "greedy"} {
+            return [my Greedy $kind $P $t $feed $src]
+        }
+        my Step $kind $P $t $feed $src
+        if {[llength $S(buf)] < $S(window)} {return {}}
+        my Commit 0
+    }
+
+    # Returns every move record still held. A move record is a dict:
+    #   kind   rapid (positioning), feed (cutting) or retract (away from
+    #          the part along the tool axis, at rapid)
+    #   axes   the joint values by axis name: X Y Z (mm) and the two
+    #          rotaries (radians, the planner's continuous values)
+    #   write  the axis names to write in this block
+    #   feed   programmed tip feed (mm/min, clamped; 0 for rapids)
+    #   mode   the feed word: direct (mm/min), inverse (1/min) or dpm
+    #   rate   the F value in that mode
+    #   tip    tool tip path length of the move (mm)
+    #   P t    the CL target in the workpiece frame (interpolated for
+    #          linearisation points, on the tool axis line for retract
+    #          and approach points; empty for positioning moves)
+    #   src    FILE:LINE of the CL record; tag "", inserted or reengage;
+    #   note   the reason of a retract
+    method flush {} {
+        if {![llength $S(buf)]} {return {}}
+        my Commit 1
+    }
+
+    # Returns a dict: points, moves, travel (deg of rotary travel
+    # written), inserted (linearisation points), retracts, holds (CL
+    # points posted with the azimuth held in the singular cone), swings
+    # (azimuth swings above -swing between close points), unresolved
+    # (moves still out of tolerance after the deepest split), forced
+    # (window commits before the merge).
+    method stats {} {
+        set d [dict create travel [::fivax::num::deg $S(travel)]]
+        foreach key {points moves inserted retracts holds swings unresolved forced} {
+            dict set d $key $S($key)
+        }
+        return $d
+    }
+
+    # Returns {P t} mapped through the MSYS frame when enabled.
+    method ToWork {P t} {
+        if {!$S(msys) || $S(frame) eq ""} {return [list $P $t]}
+        lassign $S(frame) o x y z
+        set Pw [::fivax::vec::add $o [::fivax::motion::FrameApply $x $y $z $P]]
+        list $Pw [::fivax::motion::FrameApply $x $y $z $t]
+    }
+
+    # Returns 1 when the next point may take any configuration: nothing
+    # written yet, or an operation's first point reached by a rapid.
+    method Fresh {kind} {
+        expr {$S(last) eq "" || ($S(pathStart) && $kind eq "rapid")}
+    }
+
+    # Returns {q1 q2 branch} of the last written point, or {}.
+    method LastRefs {} {
+        if {$S(last) eq ""} {return {}}
+        lassign $S(last) joints - - - lab
+        list [lindex $joints 3] [lindex $joints 4] $lab
+    }
+
+    # Posts one CL point with the greedy choice: the preferred candidate
+    # at a fresh start, else the nearest one that needs no retract (the
+    # nearest of all, with a retract, when none does).
+    method Greedy {kind P t feed src} {
+        namespace upvar ::fivax::motion retractCost retractCost
+        set ctx $S(ctx)
+        set refs [my LastRefs]
+        set cands [::fivax::motion::Candidates $ctx $t $refs $src]
+        if {[my Fresh $kind]} {
+            set choice [::fivax::motion::Preferred $ctx $cands]
+        } else {
+            lassign $refs a1 a2 al
+            lassign [dict get $ctx swing] ms1 ms2
+            set isFeed [expr {$kind eq "feed"}]
+            set ok {}
+            foreach {b1 b2 bl} $cands {
+                if {[::fivax::motion::Cost $ms1 $ms2 $isFeed $a1 $a2 $al $b1 $b2 $bl] < $retractCost} {
+                    lappend ok $b1 $b2 $bl
+                }
+            }
+            if {![llength $ok]} {
+                if {$S(on-limit) eq "error"} {::fivax::motion::LimitError $ctx $a1 $a2 $t $src}
+                set ok $cands
+            }
+            set choice [::fivax::motion::Nearest [list $a1 $a2] $ok]
+        }
+        set S(pathStart) 0
+        my Emit $kind $P $t $feed $src {*}$choice
+    }
+
+    # Adds one CL point to the optimiser's buffer as a layer
+    # {kind P t feed src states}, states being the flat list
+    # {q1 q2 branch cost back ...}: cost of the best path from the last
+    # written point (normalised to a minimum of 0), back the index of its
+    # predecessor in the previous layer (-1 for the first layer).
+    method Step {kind P t feed src} {
+        namespace upvar ::fivax::motion zeroCost zeroCost
+        set ctx $S(ctx)
+        if {[llength $S(buf)]} {
+            set prev [lindex $S(buf) end 5]
+        } elseif {$S(last) ne ""} {
+            set prev [list {*}[my LastRefs] 0.0 -1]
+        } else {
+            set prev {}
+        }
+        set refs {}
+        foreach {a b lab - -} $prev {lappend refs $a $b $lab}
+        set cands [::fivax::motion::Candidates $ctx $t $refs $src]
+        set fresh [expr {![llength $S(buf)] && [my Fresh $kind]}]
+        set S(pathStart) 0
+        if {![llength $prev]} {
+            set states {}
+            foreach {b1 b2 bl} $cands {
+                lappend states $b1 $b2 $bl [expr {[::fivax::motion::PreferCost $ctx $b1 $b2]
+                    + $zeroCost * (abs($b1) + abs($b2))}] -1
+            }
+        } else {
+            set states [my Relax $prev $cands [expr {$kind eq "feed"}] $t $src]
+            if {$fresh} {
+                set i 3
+                foreach {b1 b2 - c -} $states {
+                    lset states $i [expr {$c + [::fivax::motion::PreferCost $ctx $b1 $b2]}]
+                    incr i 5
+                }
+            }
+        }
+        lappend S(buf) [list $kind $P $t $feed $src $states]
+    }
+
+    # Returns the states (see Step) of the candidate triples cands reached
+    # from the states prev by a move of the given kind (isFeed 1: cutting).
+    # With -on-limit error, moves needing a retract are excluded and a
+    # layer left unreachable raises {FIVAX MOTION LIMIT} naming src. States
+    # equal mod 360 deg on unlimited continuous axes have the same future;
+    # only the cheaper is kept.
+    method Relax {prev cands isFeed t src} {
+        namespace upvar ::fivax::motion retractCost retractCost
+        lassign [dict get $S(ctx) swing] ms1 ms2
+        set w1 $S(w1)
+        set w2 $S(w2)
+        set err [expr {$S(on-limit) eq "error"}]
+        set states {}
+        set low Inf
+        foreach {b1 b2 bl} $cands {
+            set best Inf
+            set arg -1
+            set i 0
+            foreach {a1 a2 al ac -} $prev {
+                set c [::fivax::motion::Cost $ms1 $ms2 $isFeed $a1 $a2 $al $b1 $b2 $bl $w1 $w2]
+                if {!($err && $c >= $retractCost) && $ac + $c < $best} {
+                    set best [expr {$ac + $c}]
+                    set arg $i
+                }
+                incr i
+            }
+            lappend states $b1 $b2 $bl $best $arg
+            if {$best < $low} {set low $best}
+        }
+        if {$low == Inf} {
+            set i [::fivax::motion::BestState $prev]
+            ::fivax::motion::LimitError $S(ctx) [lindex $prev [expr {5 * $i}]] \
+                [lindex $prev [expr {5 * $i + 1}]] $t $src
+        }
+        set i 3
+        foreach {- - - c -} $states {
+            lset states $i [expr {$c - $low}]
+            incr i 5
+        }
+        if {[llength $states] > 5} {set states [::fivax::motion::Fold $S(axes) $states]}
+        return $states
+    }
+
+    # Writes the settled part of the buffer and returns its moves: all of
+    # it along the best path when all is 1; else the prefix up to the
+    # merge point when it covers half the window, or else the first half
+    # along the best path, the rest being re-rooted at the last written
+    # point.
+    method Commit {all} {
+        set n [llength $S(buf)]
+        set path [::fivax::motion::Trace $S(buf) \
+            [::fivax::motion::BestState [lindex $S(buf) end 5]]]
+        set k $n
+        set forced 0
+        if {!$all} {
+            set m [::fivax::motion::Merge $S(buf)]
+            set k [expr {$m >= $n / 2 - 1 ? $m + 1 : $n / 2}]
+            set forced [expr {$m < $n / 2 - 1}]
+        }
+        set moves {}
+        foreach layer [lrange $S(buf) 0 [expr {$k - 1}]] i [lrange $path 0 [expr {$k - 1}]] {
+            lassign $layer kind P t feed src states
+            lappend moves {*}[my Emit $kind $P $t $feed $src \
+                {*}[lrange $states [expr {5 * $i}] [expr {5 * $i + 2}]]]
+        }
+        set S(buf) [lrange $S(buf) $k end]
+        if {$forced} {
+            incr S(forced)
+            my Reroot
+        }
+        return $moves
+    }
+
+    # Recomputes the costs of the held layers from the last written point.
+    method Reroot {} {
+        set prev [list {*}[my LastRefs] 0.0 -1]
+        set buf {}
+        foreach layer $S(buf) {
+            lassign $layer kind P t feed src states
+            set cands {}
+            foreach {a b lab - -} $states {lappend cands $a $b $lab}
+            set states [my Relax $prev $cands [expr {$kind eq "feed"}] $t $src]
+            lappend buf [lreplace $layer 5 5 $states]
+            set prev $states
+        }
+        set S(buf) $buf
+    }
+}
+
+# ::fivax::motion::FrameApply -- Returns v.x X + v.y Y + v.z Z.
+proc ::fivax::motion::FrameApply {x y z v} {
+    lassign $v a b c
+    ::fivax::vec::add [::fivax::vec::add [::fivax::vec::scale $a $x] \
+        [::fivax::vec::scale $b $y]] [::fivax::vec::scale $c $z]
+}
+
+# ::fivax::motion::Fold --
+#	Returns the flat states with those equal mod 360 deg on the unlimited
+#	continuous axes (axes: the planner's per-axis dicts) merged into the
+#	cheapest of them; states unchanged when no axis is unlimited.
+proc ::fivax::motion::Fold {axes states} {
+    variable pi
+    lassign [lmap axis $axes {dict get $axis unlimited}] u1 u2
+    if {!$u1 && !$u2} {return $states}
+    set twoPi [expr {2.0 * $pi}]
+    set keep [dict create]
+    foreach {a b lab c back} $states {
+        set ka [expr {$u1 ? $a - $twoPi * floor($a / $twoPi + 1e-9) : $a}]
+        set kb [expr {$u2 ? $b - $twoPi * floor($b / $twoPi + 1e-9) : $b}]
+        set key [format "%.7f %.7f %d" $ka $kb $lab]
+        if {![dict exists $keep $key] || $c < [lindex [dict get $keep $key] 3]} {
+            dict set keep $key [list $a $b $lab $c $back]
+        }
+    }
+    concat {*}[dict values $keep]
+}
+
+# ::fivax::motion::BestState -- Returns the index of the cheapest of the flat states.
+proc ::fivax::motion::BestState {states} {
+    set best -1
+    set bc Inf
+    set i 0
+    foreach {- - - c -} $states {
+        if {$c < $bc} {set bc $c; set best $i}
+        incr i
+    }
+    return $best
+}
+
+# ::fivax::motion::Trace --
+#	Returns the state index of every layer of buf on the best path ending
+#	in state index last of the last layer.
+proc ::fivax::motion::Trace {buf last} {
+    set path [list $last]
+    for {set j [expr {[llength $buf] - 1}]} {$j > 0} {incr j -1} {
+        set last [lindex $buf $j 5 [expr {5 * $last + 4}]]
+        lappend path $last
+    }
+    lreverse $path
+}
+
+# ::fivax::motion::Merge --
+#	Returns the index of the last layer of buf where the best paths to all
+#	reachable states of the last layer pass through one state, or -1.
+proc ::fivax::motion::Merge {buf} {
+    set live [dict create]
+    set i 0
+    foreach {- - - c -} [lindex $buf end 5] {
+        if {$c < Inf} {dict set live $i 1}
+        incr i
+    }
+    for {set j [expr {[llength $buf] - 1}]} {$j > 0} {incr j -1} {
+        if {[dict size $live] == 1} {return $j}
+        set states [lindex $buf $j 5]
+        set next [dict create]
+        foreach s [dict keys $live] {dict set next [lindex $states [expr {5 * $s + 4}]] 1}
+        set live $next
+    }
+    expr {[dict size $live] == 1 ? 0 : -1}
+}
