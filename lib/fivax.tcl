@@ -30,7 +30,7 @@ foreach ::fivax::File {
     clsf.tcl mom.tcl def.tcl
     machine.tcl kin.tcl
     curve.tcl motion/plan.tcl motion/candidates.tcl motion/moves.tcl
-    motion/linearise.tcl motion/feeds.tcl
+    motion/linearise.tcl motion/feeds.tcl motion/holes.tcl
     nc.tcl output.tcl
     verify.tcl
     settings.tcl

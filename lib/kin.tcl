@@ -25,7 +25,7 @@
 #	Errors: {FIVAX KIN <DETAIL>}.
 
 namespace eval ::fivax::kin {
-    namespace export model forward orientations position interpolationError
+    namespace export model forward orientations position interpolationError toolInMachine
     namespace ensemble create -prefixes 0
     namespace upvar ::fivax::num pi pi
 
@@ -160,6 +160,22 @@ proc ::fivax::kin::forward {model joints} {
         [list [expr {$tx * $c2 + ($uy2 * $tz - $uz2 * $ty) * $n2 + $ux2 * $k}] \
              [expr {$ty * $c2 + ($uz2 * $tx - $ux2 * $tz) * $n2 + $uy2 * $k}] \
              [expr {$tz * $c2 + ($ux2 * $ty - $uy2 * $tx) * $n2 + $uz2 * $k}]]
+}
+
+# ::fivax::kin::toolInMachine --
+#	Returns the tool direction in the machine frame at rotaries {q1 q2}:
+#	turned by the head axes only (table axes turn the part, not the tool),
+#	so always Z on a table-table machine.
+proc ::fivax::kin::toolInMachine {model q} {
+    lassign $q q1 q2
+    lassign [dict get $model geo] kc ux1 uy1 uz1 - - - s1 ux2 uy2 uz2 - - - s2
+    set t {0.0 0.0 1.0}
+    if {$kc == 2} {return $t}
+    set t [::fivax::vec::rotate [list $ux1 $uy1 $uz1] [expr {$s1 * $q1}] $t]
+    if {$kc == 0} {
+        set t [::fivax::vec::rotate [list $ux2 $uy2 $uz2] [expr {$s2 * $q2}] $t]
+    }
+    return $t
 }
 
 # ::fivax::kin::orientations --

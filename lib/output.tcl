@@ -6,6 +6,14 @@
 #	goes; the blocks are built by an nc Writer (lib/nc.tcl). Returns text
 #	only: the host writes it.
 #
+#	The post's .def is the one source of formats: every address this layer
+#	writes is defined there (FORMAT, ADDRESS with FORCE, MIN/MAX, LEADER),
+#	and so are the word separator, end of line and sequence numbers. A
+#	LEADER may be a bracketed [$mom_sys_leader(NAME)] (X Y Z N, and
+#	fourth_axis / fifth_axis: the machine's rotary letters); the machine
+#	file's 'output' keys and the options below override decimals and
+#	numbering.
+#
 #	Dialects are data (the Dialects table): what differs between
 #	controllers is looked up there, not written as a copy of the code.
 #	Errors: {FIVAX OPTION ...}, {FIVAX OUTPUT <DETAIL>}.
@@ -15,33 +23,47 @@ namespace eval ::fivax::output {
     namespace ensemble create -prefixes 0
 
     variable Options {
+        {-def any {} DICT "the post's .def as read by fivax::def (required)"}
         {-controller {enum fanuc linuxcnc} fanuc NAME "controller dialect"}
-        {-decimals {int min 0 max 9} 3 N "decimals of X Y Z"}
-        {-angle-decimals {int min 0 max 9} 3 N "decimals of the rotary axes"}
-        {-feed-decimals {int min 0 max 9} 1 N "decimals of F in mm/min"}
-        {-inverse-decimals {int min 0 max 9} 3 N "decimals of F in inverse time (G93)"}
-        {-sequence bool 1 "" "write N sequence numbers"}
-        {-seq-start {int min 0} 10 N "first sequence number"}
-        {-seq-incr {int min 1} 10 N "sequence number step"}
+        {-decimals {maybe int min 0 max 9} {} N "decimals of X Y Z (default: the .def's)"}
+        {-angle-decimals {maybe int min 0 max 9} {} N "decimals of the rotary axes (default: the .def's)"}
+        {-feed-decimals {maybe int min 0 max 9} {} N "decimals of F in mm/min (default: the .def's)"}
+        {-inverse-decimals {maybe int min 0 max 9} {} N
+            "decimals of F in inverse time, G93 (default: the .def's)"}
+        {-sequence {maybe bool} {} "0|1" "write N sequence numbers (default: when the .def has a SEQUENCE)"}
+        {-seq-start {maybe int min 0} {} N "first sequence number (default: the .def's)"}
+        {-seq-incr {maybe int min 1} {} N "sequence number step (default: the .def's)"}
         {-program {int min 0} 1000 N "program number"}
+        {-warn any {} CMD "command prefix called with each warning (a MIN/MAX Warning of the .def)"}
     }
+    # The addresses this layer writes: every one must be in the .def.
+    variable Addresses {G_motion G_feed G_plane G_mode G_units G_length G_cycle
+        G_return G_dwell X Y Z R Q P_ms P_s fourth_axis fifth_axis F F_inv S T H
+        M_spindle M_coolant M N}
 
     # Per dialect:
     #   program    the program-number line format ("" for none: the program
     #              comment stands alone, "(PROGRAM n)" when empty)
     #   active     comment words the controller would act on (defused)
-    #   dwell      the unit of G4 P: ms or s
+    #   dwell      the address of a dwell time (G4 and cycles): P_ms
+    #              (milliseconds) or P_s (seconds)
+    #   cycles     canned cycle G codes by NX cycle event; a cycle the
+    #              control lacks is expanded into moves by the planner
     variable Dialects {
         fanuc {
             program O%04d
             active {}
-            dwell ms
+            dwell P_ms
+            cycles {drill 81 drill_dwell 82 drill_deep 83 drill_break_chip 73 tap 84
+                bore 85 bore_drag 86 bore_no_drag 76 bore_back 87 bore_manual 88 bore_dwell 89}
         }
         linuxcnc {
             program {}
             active {MSG DEBUG PRINT LOG LOGOPEN LOGAPPEND LOGCLOSE PROBEOPEN PROBECLOSE
                 ABORT PY PYRUN PYRELOAD}
-            dwell s
+            dwell P_s
+            cycles {drill 81 drill_dwell 82 drill_deep 83 drill_break_chip 73
+                bore 85 bore_drag 86 bore_back 87 bore_manual 88 bore_dwell 89}
         }
     }
 }
@@ -59,7 +81,7 @@ proc ::fivax::output::create {machine args} {
     dict for {key value} [dict get $machine output] {
         set opt -[string map {_ -} $key]
         if {[string first - $key] >= 0 || $opt ni [::fivax::opts::names $Options]
-                || $opt eq "-controller"} {
+                || $opt in {-controller -def -warn}} {
             ::fivax::Fail OUTPUT KEY "$src: output: unknown key '$key'"
         }
         try {
@@ -75,22 +97,27 @@ proc ::fivax::output::create {machine args} {
             [join [dict keys $::fivax::output::Dialects] {, }]"
     }
     lappend fromMachine -controller $controller
-    Writer new $machine [::fivax::opts::parse $Options [concat $fromMachine $args] "output create"]
+    set opts [::fivax::opts::parse $Options [concat $fromMachine $args] "output create"]
+    if {![dict size [dict get $opts -def]]} {
+        ::fivax::Fail OPTION MISSING "output create: -def (the post's .def) is required"
+    }
+    Writer new $machine $opts
 }
 
 oo::class create ::fivax::output::Writer {
     # nc: the block Writer; cfg: options; dialect: its table entry;
     # rotaries: {name chainIndex rollover} in output order (the 4th axis
     # word first); length: the H register to activate with the next Z
-    # move (0: none); feedMode: inverse or direct of the last feed block.
-    variable nc cfg dialect machine rotaries length feedMode
+    # move (0: none); feedMode: inverse or direct of the last feed block;
+    # cycle: the G code of the active canned cycle (0: none). After G80
+    # Z and the motion code are written again: the tool stands at the
+    # initial level, and the motion mode is stated afresh.
+    variable nc cfg dialect machine rotaries length feedMode cycle
 
     constructor {aMachine opts} {
         set machine $aMachine
         set cfg $opts
         set dialect [dict get $::fivax::output::Dialects [dict get $cfg -controller]]
-        set nc [::fivax::nc::create -sequence [dict get $cfg -sequence] \
-            -seq-start [dict get $cfg -seq-start] -seq-incr [dict get $cfg -seq-incr]]
         set names [::fivax::machine::rotaryNames $machine]
         set rotaries {}
         set i 0
@@ -102,34 +129,55 @@ oo::class create ::fivax::output::Writer {
         set rotaries $names
         set length 0
         set feedMode direct
-        my Addresses
+        set cycle 0
+        set nc [::fivax::nc::create -sequence 0 -warn [dict get $cfg -warn]]
+        my Define [dict get $cfg -def]
     }
 
     destructor {
         if {[info exists nc]} {$nc destroy}
     }
 
-    # Defines the addresses of the blocks this layer writes.
-    method Addresses {} {
-        set dec %.[dict get $cfg -decimals]f
-        set ang %.[dict get $cfg -angle-decimals]f
-        set feed %.[dict get $cfg -feed-decimals]f
-        set inv %.[dict get $cfg -inverse-decimals]f
+    # Defines the addresses of the .def def on the block writer, resolves
+    # their leaders and applies the decimal and numbering options.
+    method Define {def} {
+        set defined [::fivax::def::configure $nc $def]
+        foreach name $::fivax::output::Addresses {
+            if {$name ni $defined} {
+                ::fivax::Fail OUTPUT DEF "the post's .def has no ADDRESS $name"
+            }
+        }
         lassign [lmap r $rotaries {lindex $r 0}] r4 r5
-        foreach {name leader fmt force} [list \
-            G_motion G %g off  G_feed G %g off  G_plane G %g off \
-            G_mode G %g off  G_units G %g off  G_length G %g off \
-            X X $dec off  Y Y $dec off  Z Z $dec off \
-            fourth_axis $r4 $ang off  fifth_axis $r5 $ang off \
-            F F $feed off  F_inv F $inv always  S S %d off  T T %d always  H H %d off \
-            M_spindle M %g off  M_coolant M %g off  M M %g always] {
-            $nc address $name -leader $leader -format $fmt -force $force
+        set leaders [dict create X X Y Y Z Z N N fourth_axis $r4 fifth_axis $r5]
+        dict for {name a} [dict get $def addresses] {
+            if {[dict get $a leader_expr] eq ""} continue
+            if {![regexp {^\s*\$mom_sys_leader\((\w+)\)\s*$} [dict get $a leader_expr] -> key]
+                    || ![dict exists $leaders $key]} {
+                ::fivax::Fail OUTPUT DEF "the post's .def: ADDRESS $name: unsupported LEADER\
+                    \[[dict get $a leader_expr]\] (the output layer knows\
+                    \[\$mom_sys_leader(NAME)\] for [join [dict keys $leaders] {, }])"
+            }
+            $nc address $name -leader [dict get $leaders $key]
+        }
+        foreach {opt addresses} {-decimals {X Y Z} -angle-decimals {fourth_axis fifth_axis}
+            -feed-decimals F -inverse-decimals F_inv} {
+            set d [dict get $cfg $opt]
+            if {$d eq ""} continue
+            foreach name $addresses {$nc address $name -format %.${d}f}
+        }
+        set seq [dict get $def sequence]
+        set on [dict get $cfg -sequence]
+        if {$on eq ""} {set on [expr {[llength $seq] > 0}]}
+        $nc sequence [expr {$on ? "on" : "off"}]
+        foreach opt {-seq-start -seq-incr} {
+            if {[dict get $cfg $opt] ne ""} {$nc configure $opt [dict get $cfg $opt]}
         }
     }
 
-    # Returns the rotary output resolution (degrees) the planner rounds to.
+    # Returns the rotary output resolution (degrees) the planner rounds
+    # to: one unit of the last decimal of the fourth axis's format.
     method angleStep {} {
-        expr {10.0 ** -[dict get $cfg -angle-decimals]}
+        expr {10.0 ** -[$nc decimals fourth_axis]}
     }
 
     # Returns the program-start lines: the dialect's program header
@@ -160,21 +208,22 @@ oo::class create ::fivax::output::Writer {
     # compensation register adjust (0: none) for the next Z move. Modal
     # memory is reset: everything is written again after a tool change.
     method toolChange {number adjust} {
-        set line [$nc block [list T $number M 6]]
+        set lines [my CycleOff]
+        lappend lines [$nc block [list T $number M 6]]
         $nc reset
         set length $adjust
-        return [list $line]
+        return $lines
     }
 
     # Returns the spindle-on block: speed (rpm), direction CLW or CCLW.
     method spindle {speed direction} {
-        list [$nc block [list S [expr {round($speed)}] M_spindle \
-            [expr {$direction eq "CCLW" ? 4 : 3}]]]
+        concat [my CycleOff] [list [$nc block [list S [expr {round($speed)}] M_spindle \
+            [expr {$direction eq "CCLW" ? 4 : 3}]]]]
     }
 
     # Returns the spindle-off block.
     method spindleOff {} {
-        list [$nc block {M_spindle 5}]
+        concat [my CycleOff] [list [$nc block {M_spindle 5}]]
     }
 
     # Returns the coolant-on block for mode (MIST: M7, else M8).
@@ -189,15 +238,73 @@ oo::class create ::fivax::output::Writer {
 
     # Returns the program stop block (optional: M1, else M0).
     method stop {optional} {
-        list [$nc block [list M [expr {$optional ? 1 : 0}]]]
+        concat [my CycleOff] [list [$nc block [list M [expr {$optional ? 1 : 0}]]]]
     }
 
     # Returns the dwell block for seconds (G4 P in the dialect's unit).
     method dwell {seconds} {
-        if {[dict get $dialect dwell] eq "s"} {
-            return [list [$nc line "G4 P[::fivax::num::fixed $seconds 3]"]]
+        concat [my CycleOff] [list [$nc block [concat {G_dwell 4} [my DwellWords $seconds]]]]
+    }
+
+    # Returns the words of a dwell time of seconds in the dialect's unit.
+    method DwellWords {seconds} {
+        set addr [dict get $dialect dwell]
+        list $addr [expr {$addr eq "P_ms" ? $seconds * 1000.0 : $seconds}]
+    }
+
+    # Returns 1 when the dialect has the canned cycle of NX cycle event.
+    method canCycle {event} {
+        dict exists $dialect cycles $event
+    }
+
+    # Returns the canned-cycle cancel block (G80) when a cycle is active.
+    method cycleOff {} {
+        my CycleOff
+    }
+
+    # Returns {G80 block} and forgets the active cycle, or {} when none is
+    # active. After a canned cycle the tool stands at the initial level,
+    # not at the last written Z: Z is written again.
+    method CycleOff {} {
+        if {!$cycle} {return {}}
+        set cycle 0
+        $nc reset {Z G_motion}
+        list [$nc block {G_cycle 80}]
+    }
+
+    # Returns the block of a hole record (kind cycle, see ::fivax::motion
+    # hole): the first of a cycle with G98, the cycle's G code, X Y, Z at
+    # the bottom, R, Q (peck) or P (dwell), F; the next ones of the same
+    # cycle with what changed.
+    method Cycle {rec} {
+        set axes [dict get $rec axes]
+        set event [dict get $rec event]
+        # a deep or chip-breaking drill without a peck depth drills in one go
+        if {$event in {drill_deep drill_break_chip} && [dict get $rec step] <= 0} {
+            set event drill
         }
-        list [$nc line [format "G4 P%d" [expr {round($seconds * 1000)}]]]
+        set code [dict get $dialect cycles $event]
+        set lines {}
+        if {$code != $cycle} {
+            set lines [my CycleOff]
+            set cycle $code
+            $nc force once {G_cycle G_return Z R F Q}
+        }
+        set words [list G_return 98 G_cycle $code]
+        if {$feedMode eq "inverse"} {
+            lappend words G_feed 94
+            set feedMode direct
+        }
+        lappend words X [dict get $axes X] Y [dict get $axes Y] Z [dict get $axes Z] \
+            R [dict get $rec r]
+        if {$code in {83 73} && [dict get $rec step] > 0} {
+            lappend words Q [dict get $rec step]
+        }
+        if {$code in {82 89}} {
+            lappend words {*}[my DwellWords [dict get $rec delay]]
+        }
+        lappend words F [dict get $rec rate]
+        lappend lines [$nc block $words]
     }
 
     # Returns text as an NC line as it is.
@@ -211,6 +318,11 @@ oo::class create ::fivax::output::Writer {
     # write list in machine units and degrees (a rotary that rolls over
     # written in [0, 360)).
     method move {rec} {
+        switch -- [dict get $rec kind] {
+            cycle {return [my Cycle $rec]}
+            dwell {return [my dwell [dict get $rec seconds]]}
+        }
+        set lines [my CycleOff]
         set isFeed [expr {[dict get $rec kind] eq "feed"}]
         set write [dict get $rec write]
         set axes [dict get $rec axes]
@@ -235,7 +347,7 @@ oo::class create ::fivax::output::Writer {
             set deg [::fivax::num::deg [dict get $axes $name]]
             if {$roll} {
                 # wrap the written value (rounded first, so 359.9996 is 0.000)
-                set step [my angleStep]
+                set step [expr {10.0 ** -[$nc decimals $addr]}]
                 set deg [expr {round($deg / $step) * $step}]
                 set deg [expr {fmod(fmod($deg, 360.0) + 360.0, 360.0)}]
             }
@@ -244,12 +356,12 @@ oo::class create ::fivax::output::Writer {
         if {$isFeed} {
             lappend words [expr {$inverse ? "F_inv" : "F"}] [dict get $rec rate]
         }
-        list [$nc block $words]
+        lappend lines [$nc block $words]
     }
 
     # Returns the program-end lines: spindle and coolant off, M30, %.
     method end {} {
-        list [$nc block {M_spindle 5 M_coolant 9}] [$nc line M30] %
+        concat [my CycleOff] [list [$nc block {M_spindle 5 M_coolant 9}] [$nc line M30] %]
     }
 
     # Returns text made safe for the inside of a ( ) comment: parentheses

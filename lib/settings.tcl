@@ -10,6 +10,8 @@ namespace eval ::fivax::settings {
     variable Job {
         {-machine text {} FILE "machine file (default: the post's machine, machines/hh-tilt45.tcl)"}
         {-arc-tol {real gt 0} 0.002 MM "chord tolerance of arcs written as points"}
+        {-log text {} FILE
+            "file for warnings, retracts and errors (default: <output>.log beside the NC file when the host names it)"}
     }
 }
 

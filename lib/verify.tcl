@@ -44,7 +44,8 @@ oo::class create ::fivax::verify::Checker {
                 list [dict get $axis min] [dict get $axis max]
             }
         }]
-        array set S {X {} Y {} Z {} q1 {} q2 {} prev {} checked 0 segments 0
+        array set S {X {} Y {} Z {} R {} q1 {} q2 {} prev {} cycle 0 return 98 initial {} bottom {}
+            checked 0 segments 0
             maxPos 0.0 maxAng 0.0 maxMidPos 0.0 maxMidAng 0.0 limitViolations 0
             worst {} worstMid {}}
         my setTool [dict get $machine tool_length]
@@ -62,13 +63,19 @@ oo::class create ::fivax::verify::Checker {
     method block {line move} {
         namespace upvar ::fivax::num pi pi
         set text [regsub -all {\([^)]*\)} $line ""]
+        set hole 0
         # (a flat pattern: nested groups with -all -inline cost 30 times more)
         foreach word [regexp -all -inline {[A-Z][-+.0-9]+} $text] {
             set letter [string index $word 0]
             set value [string range $word 1 end]
             if {![string is double -strict $value]} continue
-            if {$letter in {X Y Z}} {
-                set S($letter) $value
+            if {$letter in {X Y Z R}} {
+                # in a canned cycle Z is the hole's bottom, kept apart
+                set S([expr {$S(cycle) && $letter eq "Z" ? "bottom" : $letter}]) $value
+                if {$S(cycle)} {set hole 1}
+            } elseif {$letter eq "G"} {
+                my GCode $value
+                if {$S(cycle)} {set hole 1}
             } elseif {[set i [lsearch -exact $S(names) $letter]] >= 0} {
                 set q [::fivax::num::rad $value]
                 lassign [lindex $S(limits) $i] min max
@@ -79,10 +86,11 @@ oo::class create ::fivax::verify::Checker {
         set P [dict get $move P]
         if {$P eq "" || $S(X) eq "" || $S(Y) eq "" || $S(Z) eq "" || $S(q1) eq "" || $S(q2) eq ""} {
             if {$P eq ""} {set S(prev) {}}
+            my EndHole $hole
             return
         }
         set t [dict get $move t]
-        set joints [list $S(X) $S(Y) $S(Z) $S(q1) $S(q2)]
+        set joints [list $S(X) $S(Y) [expr {$hole ? $S(bottom) : $S(Z)}] $S(q1) $S(q2)]
         lassign [::fivax::kin::forward $S(model) $joints] Pm tm
         set dp [::fivax::vec::norm [::fivax::vec::sub $Pm $P]]
         set da [::fivax::num::deg [::fivax::vec::angle $tm $t]]
@@ -93,6 +101,38 @@ oo::class create ::fivax::verify::Checker {
             my Segment $S(prev) $joints $P $t [dict get $move src]
         }
         set S(prev) [list $joints $P $t]
+        my EndHole $hole
+    }
+
+    # Follows the canned-cycle state of G code g: G73, G76, G81..G89 start
+    # a cycle (the Z before it is the initial level), G98 / G99 choose the
+    # return to the initial level or the R plane, G80 and G0..G3 end it.
+    method GCode {g} {
+        set g [expr {$g + 0}]
+        if {$g in {73 76 81 82 83 84 85 86 87 88 89}} {
+            if {!$S(cycle)} {
+                set S(initial) $S(Z)
+                set S(bottom) $S(Z)
+            }
+            set S(cycle) 1
+        } elseif {$g in {98 99}} {
+            set S(return) $g
+        } elseif {$g in {80 0 1 2 3}} {
+            set S(cycle) 0
+        }
+    }
+
+    # After a block of a canned cycle that drilled a hole (hole 1): the
+    # tool has gone to Z (the bottom, checked) and back to the initial
+    # level (G98) or the R plane (G99): the modal Z becomes that level.
+    method EndHole {hole} {
+        if {!$hole} return
+        set S(prev) {}
+        if {$S(return) == 99} {
+            set S(Z) $S(R)
+        } else {
+            set S(Z) $S(initial)
+        }
     }
 
     # Measures the tip and axis at the quarter points of the linear joint

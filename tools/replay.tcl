@@ -60,12 +60,20 @@ proc ::replay::Listing {text} {
 #	Runs the post on clsf with the job settings, writing NC text to
 #	channel chan. Returns the runtime statistics merged with the post's
 #	summary.
-proc ::replay::Post {settings clsf chan} {
+proc ::replay::Post {settings clsf chan out} {
     variable ::root
+    set globals [dict create fivax_settings $settings]
+    if {$out ne ""} {
+        # the output file as NX names it to the post
+        set out [file normalize $out]
+        dict set globals mom_output_file_full_name $out
+        dict set globals mom_output_file_directory [file dirname $out]
+        dict set globals mom_output_file_basename [file rootname [file tail $out]]
+        dict set globals mom_output_file_suffix [string trimleft [file extension $out] .]
+    }
     set rt [::fivax::mom create -post [file join $root post fivax.tcl] \
         -def [file join $root post fivax.def] -channel $chan \
-        -listing ::replay::Listing \
-        -globals [dict create fivax_settings $settings] \
+        -listing ::replay::Listing -globals $globals \
         -autopath [list [file join $root lib] [info library]]]
     try {
         set stats [$rt run $clsf]
@@ -119,8 +127,15 @@ proc ::replay::main {argv} {
         Die "replay: cannot write [expr {$out eq "" ? "in [pwd]" : $out}]: [lindex [split $msg :] end]"
     }
     fconfigure $chan -translation lf -encoding utf-8
+    # the post's log (warnings, retracts, errors) goes beside the NC file
+    # under the same rule: a temporary name, kept only when the run succeeds
+    set log ""
+    if {$out ne "" && [dict get $settings -log] eq ""} {
+        set log [file rootname [file normalize $out]].log
+        dict set settings -log $tmp.log
+    }
     try {
-        set stats [Post $settings $clsf $chan]
+        set stats [Post $settings $clsf $chan $out]
         close $chan
         if {[dict exists $stats limitViolations] && [dict get $stats limitViolations] > 0} {
             # A safety net: the planner never writes such a value.
@@ -128,9 +143,10 @@ proc ::replay::main {argv} {
         }
     } on error {msg} {
         if {$chan in [chan names]} {close $chan}
-        file delete -force $tmp
+        file delete -force $tmp $tmp.log
         Die $msg
     }
+    if {$log ne "" && [file exists $tmp.log]} {file rename -force $tmp.log $log}
     if {$out eq ""} {
         set in [open $tmp r]
         fconfigure stdout -translation lf

@@ -48,6 +48,7 @@ oo::define ::fivax::motion::Planner {
         }
         my Travel $moves
         set S(last) $b
+        set S(lastHole) ""
         incr S(moves) [llength $moves]
         return $moves
     }

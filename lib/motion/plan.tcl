@@ -11,6 +11,7 @@
 #	    linearise.tcl   splitting moves until the joint interpolation
 #	                    stays within tolerance
 #	    feeds.tcl       feed clamp and the feed of each cutting move
+#	    holes.tcl       drilling: canned cycle records or expanded moves
 #
 #	Choice. A cutting move may go from one candidate to the next when both
 #	lie on the same branch (or one is in the singular cone, where branches
@@ -114,7 +115,7 @@ oo::class create ::fivax::motion::Planner {
                 rollover [dict get $axis rollover] prefer [dict get $axis prefer] swing $ms]
         }
         set S(frame) {}
-        array set S {last "" buf {} pathStart 1 points 0 moves 0 travel 0.0
+        array set S {last "" lastHole "" buf {} pathStart 1 points 0 moves 0 travel 0.0
             inserted 0 retracts 0 holds 0 swings 0 unresolved 0 forced 0}
         my setTool [dict get $machine tool_length]
     }
@@ -165,8 +166,11 @@ oo::class create ::fivax::motion::Planner {
     }
 
     # Returns every move record still held. A move record is a dict:
-    #   kind   rapid (positioning), feed (cutting) or retract (away from
-    #          the part along the tool axis, at rapid)
+    #   kind   rapid (positioning), feed (cutting), retract (away from
+    #          the part along the tool axis, at rapid), dwell (seconds: the
+    #          time) or cycle (a canned cycle's hole: axes at the bottom,
+    #          with event, r and initial (machine Z of the R plane and of
+    #          the initial level), step (peck) and delay (s), see hole)
     #   axes   the joint values by axis name: X Y Z (mm) and the two
     #          rotaries (radians, the planner's continuous values)
     #   write  the axis names to write in this block
