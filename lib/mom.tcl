@@ -223,7 +223,7 @@ oo::class create ::fivax::mom::Runtime {
             headerPending 0 rapid 0 circle {} cycle {} axis {0.0 0.0 1.0}
             point {} tool {} toolKey {} prevToolKey {} toolChanged 0 firstMove 1
             toolNames {} handlers {} msysPending 0 unknown {} udes {}
-            scale 1.0 clUnit MM outUnit MM unitsSeen 0 firstUnit MM
+            scale 1.0 clUnit MM outUnit MM unitsSeen 0 firstUnit MM nurbs {}
         }
         set S(nc) [::fivax::nc::create -sequence 0]
         if {$S(def) ne ""} {
@@ -314,6 +314,7 @@ oo::class create ::fivax::mom::Runtime {
 
     # Finish -- Closes an open path and fires MOM_end_of_program.
     method Finish {} {
+        if {[llength $S(nurbs)]} {my Nurbs}
         my FlushHeader
         if {$S(pathOpen)} {my EndPath}
         my Fire end_of_program
@@ -368,6 +369,7 @@ oo::class create ::fivax::mom::Runtime {
         my Globals [list mom_cl_line [dict get $rec line]]
         if {$S(headerPending) && $kind ni $headerKinds} {my FlushHeader}
         if {$S(scale) != 1.0} {set rec [my Scale $rec]}
+        if {[llength $S(nurbs)] && $kind ni {KNOT CNTRL}} {my Nurbs}
         switch -- $kind {
             GOTO      {my Motion $rec}
             RAPID     {set S(rapid) 1}
@@ -397,6 +399,8 @@ oo::class create ::fivax::mom::Runtime {
             OPSTOP    {my EnsurePath; my Fire opstop}
             DELAY     {my Delay $rec}
             CYCLE     {my Cycle $rec}
+            NURBS     {set S(nurbs) [dict create rec $rec knots {} cntrl {}]}
+            KNOT - CNTRL {my NurbsData $rec}
             UNITS     {my Units $rec}
             MULTAX - FINI - END {}
             default   {my Unknown $rec}
@@ -710,6 +714,70 @@ oo::class create ::fivax::mom::Runtime {
             my SetPosition $p $S(axis)
             my Move $event
         }
+    }
+
+    # NurbsData --
+    #	KNOT or CNTRL: adds the record's knots or control point to the open
+    #	NURBS. Errors: {FIVAX MOM NURBS} outside a NURBS.
+    method NurbsData {rec} {
+        set kind [dict get $rec kind]
+        if {![llength $S(nurbs)]} {
+            ::fivax::Fail MOM NURBS "[::fivax::mom::Where $rec]: $kind outside a NURBS"
+        }
+        if {$kind eq "KNOT"} {
+            dict lappend S(nurbs) knots {*}[dict get $rec knots]
+        } else {
+            dict lappend S(nurbs) cntrl [dict get $rec point]
+        }
+    }
+
+    # Nurbs --
+    #	Fires the open NURBS as MOM_nurbs_move with mom_nurbs_order,
+    #	mom_nurbs_knot_count and mom_nurbs_knots(i) (the full, clamped knot
+    #	vector), mom_nurbs_point_count and mom_nurbs_points(i,0..2) (the
+    #	control points, the current position first), mom_nurbs_weights(i)
+    #	(all 1) and mom_mcs_goto at the curve's end (see the CLSF
+    #	convention in lib/curve.tcl; NX's own layout of these globals is
+    #	inferred from Post Builder posts that read them). A post without
+    #	MOM_nurbs_move gets the curve as linear moves within 0.002 mm, as
+    #	NX linearises for a post that does not take NURBS.
+    #	Errors: {FIVAX MOM NURBS} "FILE:LINE: NURBS: what".
+    method Nurbs {} {
+        set data $S(nurbs)
+        set S(nurbs) {}
+        set rec [dict get $data rec]
+        my EnsurePath
+        if {$S(point) eq ""} {
+            ::fivax::Fail MOM NURBS "[::fivax::mom::Where $rec]: NURBS: no position before the curve"
+        }
+        try {
+            set curve [::fivax::curve::clsfNurbs $S(point) [dict get $data knots] [dict get $data cntrl]]
+        } trap {FIVAX CURVE} {msg} {
+            ::fivax::Fail MOM NURBS "[::fivax::mom::Where $rec]: NURBS: $msg"
+        }
+        my FeedGlobals $rec
+        if {![my Has MOM_nurbs_move]} {
+            foreach p [::fivax::curve::nurbsPoints $curve 0.002] {
+                my SetPosition $p $S(axis)
+                my Move linear_move
+            }
+            return
+        }
+        set knots [dict get $curve knots]
+        set points [dict get $curve points]
+        my Globals [list mom_nurbs_order [expr {[dict get $curve degree] + 1}] \
+            mom_nurbs_knot_count [llength $knots] mom_nurbs_point_count [llength $points]]
+        my Array mom_nurbs_knots $knots
+        my Array mom_nurbs_weights [dict get $curve weights]
+        set pairs {}
+        set i 0
+        foreach p $points {
+            foreach j {0 1 2} c $p {lappend pairs $i,$j $c}
+            incr i
+        }
+        $S(interp) eval [list array set ::mom_nurbs_points $pairs]
+        my SetPosition [lindex $points end] $S(axis)
+        my Move nurbs_move
     }
 
     # Pitch -- Returns the axial rise per turn of the arc piece from a to b sweeping sweep (rad).

@@ -117,7 +117,7 @@ proc fivax_close_log {} {
 proc fivax_setup {} {
     global fivax fivax_settings fivax_post_dir env
     global mom_kin_machine_type mom_kin_output_unit mom_kin_arc_output_mode
-    global mom_kin_helical_arc_output_mode
+    global mom_kin_helical_arc_output_mode mom_kin_nurbs_output_type
     if {![info exists fivax_settings]} {set fivax_settings {}}
     set given $fivax_settings
     if {[info exists env(FIVAX_SETTINGS)] && [string is list $env(FIVAX_SETTINGS)]} {
@@ -134,6 +134,7 @@ proc fivax_setup {} {
     set mom_kin_output_unit [expr {[dict get $fivax(machine) units] eq "inch" ? "IN" : "MM"}]
     set mom_kin_arc_output_mode FULL_CIRCLE
     set mom_kin_helical_arc_output_mode FULL_CIRCLE
+    set mom_kin_nurbs_output_type BSPLINE
 }
 fivax_guard fivax_setup
 
@@ -314,6 +315,28 @@ proc fivax_arc {} {
     }
 }
 
+# NURBS (NX's spline motion, mom_kin_nurbs_output_type BSPLINE): the
+# curve's points within the arc tolerance go to the planner.
+proc MOM_nurbs_move {} {fivax_guard fivax_nurbs}
+
+# fivax_nurbs -- Hands the points of the current NURBS (mom_nurbs_*) to the planner.
+proc fivax_nurbs {} {
+    global fivax mom_nurbs_order mom_nurbs_knot_count mom_nurbs_knots
+    global mom_nurbs_point_count mom_nurbs_points mom_nurbs_weights
+    set knots {}
+    for {set i 0} {$i < $mom_nurbs_knot_count} {incr i} {lappend knots $mom_nurbs_knots($i)}
+    set points {}
+    set weights {}
+    for {set i 0} {$i < $mom_nurbs_point_count} {incr i} {
+        lappend points [list $mom_nurbs_points($i,0) $mom_nurbs_points($i,1) $mom_nurbs_points($i,2)]
+        if {[info exists mom_nurbs_weights($i)]} {lappend weights $mom_nurbs_weights($i)}
+    }
+    set curve [fivax::curve nurbs [expr {$mom_nurbs_order - 1}] $knots $points $weights]
+    foreach point [fivax::curve nurbsPoints $curve [dict get $fivax(settings) -arc-tol]] {
+        fivax_motion feed $point
+    }
+}
+
 proc MOM_gohome_move {} {fivax_guard {fivax_motion rapid}}
 
 # fivax_motion --
@@ -378,10 +401,14 @@ proc fivax_emit {moves} {
         if {[dict get $move kind] eq "retract"} {
             fivax_log "retract at [dict get $move src]: [dict get $move note]"
         }
-        foreach line [$fivax(out) move $move] {
+        # the move ends with its last block; those before it (G80 ...) carry no CL point
+        set lines [$fivax(out) move $move]
+        foreach line [lrange $lines 0 end-1] {
             fivax_out [list $line]
-            $fivax(verify) block $line $move
+            $fivax(verify) block $line {kind none P {} t {} src {}}
         }
+        fivax_out [lrange $lines end end]
+        $fivax(verify) block [lindex $lines end] $move
     }
 }
 

@@ -28,8 +28,9 @@ proc ::nxhost::install {dir} {
 # ::nxhost::session --
 #	Returns a new session: a fresh interpreter with the MOM_* commands,
 #	into which the post file is sourced from the directory cwd, with the
-#	NX globals of its .def and output file set first.
-proc ::nxhost::session {post def cwd output} {
+#	NX globals of its .def and output file set first, and the script prep
+#	run in it before the post.
+proc ::nxhost::session {post def cwd output {prep {}}} {
     variable count
     set s ::nxhost::s[incr count]
     upvar #0 $s S
@@ -54,6 +55,7 @@ proc ::nxhost::session {post def cwd output} {
         mom_output_file_basename [file rootname [file tail $output]] \
         mom_output_file_suffix [string trimleft [file extension $output] .] \
         mom_output_unit MM mom_part_unit MM]
+    $i eval $prep
     set here [pwd]
     cd $cwd
     try {
