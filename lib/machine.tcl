@@ -25,7 +25,8 @@ namespace eval ::fivax::machine {
         name {} description {} units mm family chain alpha 0 y_H 0 pivot 0
         tool_length 0 table_offset {0 0 0} axes {} controller fanuc output {}
         clearance 50 safe_z {} feed_min 1 feed_max 20000
-        inverse_time_max 9999 max_swing 180
+        inverse_time_max 9999 max_swing 180 work_offset 54 tool_change_z 0
+        home_rotaries 0 entry_feed {}
     }
     variable topRequired {name axes}
     variable axisKeys {side direction point sense min max continuous prefer rollover}
@@ -139,6 +140,21 @@ proc ::fivax::machine::parse {text sourceName} {
         ::fivax::Fail MACHINE VALUE "$src: 'feed_min' exceeds 'feed_max'"
     }
     dict set m max_swing [::fivax::num::rad [dict get $m max_swing]]
+    set v [Get $raw work_offset]
+    if {$v ni {54 55 56 57 58 59}} {
+        ::fivax::Fail MACHINE VALUE "$src: 'work_offset' must be 54 to 59 (G54..G59): $v"
+    }
+    dict set m work_offset $v
+    dict set m tool_change_z [Real $src tool_change_z [Get $raw tool_change_z]]
+    set v [Get $raw home_rotaries]
+    if {$v ni {0 1}} {::fivax::Fail MACHINE VALUE "$src: 'home_rotaries' must be 0 or 1: $v"}
+    dict set m home_rotaries $v
+    set v [Get $raw entry_feed]
+    if {$v ne ""} {
+        set v [Real $src entry_feed $v]
+        if {$v <= 0} {::fivax::Fail MACHINE VALUE "$src: 'entry_feed' must be positive: $v"}
+    }
+    dict set m entry_feed $v
 
     set output [Get $raw output]
     if {![string is list $output] || [llength $output] % 2} {

@@ -76,6 +76,8 @@ oo::define ::fivax::motion::Planner {
         }
         my Travel $new
         set S(last) $rec(initial)
+        set S(lastKind) rapid
+        set S(lastSrc) $src
         set S(lastHole) [expr {$native ? [list $q1 $q2 $zi] : ""}]
         incr S(moves) [llength $new]
         concat $moves $new

@@ -116,17 +116,23 @@ oo::class create ::fivax::motion::Planner {
         }
         set S(frame) {}
         array set S {last "" lastHole "" buf {} pathStart 1 points 0 moves 0 travel 0.0
-            inserted 0 retracts 0 holds 0 swings 0 unresolved 0 forced 0}
+            inserted 0 retracts 0 holds 0 swings 0 unresolved 0 forced 0 dwells 0
+            dwellTurn 0.0 clamps 0 slowdown 0.0 lastKind "" lastSrc ""}
+        set S(entryFeed) [dict get $machine entry_feed]
         my setTool [dict get $machine tool_length]
     }
 
     # Rebuilds the kinematic model for a tool of length len (mm). Call
     # flush first: points still held would be posted for the new tool.
     # Errors: {FIVAX MOTION STATE} while points are held.
+    # The tool then stands at the tool-change position: the next point is
+    # approached as a first point (rotaries, then X Y, then Z down).
     method setTool {len} {
         if {[llength $S(buf)]} {
             ::fivax::Fail MOTION STATE "setTool with [llength $S(buf)] CL points held: flush first"
         }
+        set S(last) ""
+        set S(lastHole) ""
         set model [::fivax::kin::model $S(machine) $len $S(table-offset)]
         set S(toolLength) $len
         set S(ctx) [::fivax::motion::Context $model $S(name) $S(axes) $S(cone) $S(angle-step)]
@@ -194,12 +200,35 @@ oo::class create ::fivax::motion::Planner {
     # (azimuth swings above -swing between close points), unresolved
     # (moves still out of tolerance after the deepest split), forced
     # (window commits before the merge).
+    # dwells (cutting moves that only turn the rotaries with the tip at
+    # rest) and dwellTurn (deg), clamps (inverse-time feeds clamped at the
+    # machine's inverse_time_max) and slowdown (the worst factor by which a
+    # clamped move runs slower than programmed).
     method stats {} {
-        set d [dict create travel [::fivax::num::deg $S(travel)]]
-        foreach key {points moves inserted retracts holds swings unresolved forced} {
+        set d [dict create travel [::fivax::num::deg $S(travel)] \
+            dwellTurn [::fivax::num::deg $S(dwellTurn)]]
+        foreach key {points moves inserted retracts holds swings unresolved forced dwells
+            clamps slowdown} {
             dict set d $key $S($key)
         }
         return $d
+    }
+
+    # Returns the moves that end the program: those still held, then a
+    # retract along the tool axis by the clearance when the last move cut.
+    # The position is unknown afterwards (the host sends the tool home).
+    method finish {} {
+        set moves [my flush]
+        if {$S(last) ne "" && $S(lastKind) eq "feed"} {
+            set up [my Above $S(last)]
+            lassign $up joints P - act
+            set move [my Move rapid $joints {X Y Z} $P $act {} $S(lastSrc)]
+            my Travel [list $move]
+            lappend moves $move
+        }
+        set S(last) ""
+        set S(lastHole) ""
+        return $moves
     }
 
     # Returns {P t} mapped through the MSYS frame when enabled.
@@ -352,10 +381,17 @@ oo::class create ::fivax::motion::Planner {
             set forced [expr {$m < $n / 2 - 1}]
         }
         set moves {}
+        set azimuths [my Departures $path $k]
+        set j 0
         foreach layer [lrange $S(buf) 0 [expr {$k - 1}]] i [lrange $path 0 [expr {$k - 1}]] {
             lassign $layer kind P t feed src states
-            lappend moves {*}[my Emit $kind $P $t $feed $src \
-                {*}[lrange $states [expr {5 * $i}] [expr {5 * $i + 2}]]]
+            lassign [lrange $states [expr {5 * $i}] [expr {5 * $i + 2}]] q1 q2 lab
+            if {[dict exists $azimuths $j]} {
+                set q2 [dict get $azimuths $j]
+                set q1 [::fivax::motion::HoldTilt $S(ctx) $t $q1 $q2]
+            }
+            lappend moves {*}[my Emit $kind $P $t $feed $src $q1 $q2 $lab]
+            incr j
         }
         set S(buf) [lrange $S(buf) $k end]
         if {$forced} {
@@ -363,6 +399,37 @@ oo::class create ::fivax::motion::Planner {
             my Reroot
         }
         return $moves
+    }
+
+    # Returns the azimuths (layer index -> q2) that the approach sets:
+    # where a rapid reaches the singular cone (the azimuth free there) and
+    # the path then leaves the cone, the rapid and the cone points after it
+    # take the azimuth the path leaves with, so the azimuth turns during the
+    # approach and not with the tool at cutting depth. Only runs that end
+    # before layer k of the best path (the written prefix) and whose tilt
+    # stays within the limits at that azimuth.
+    method Departures {path k} {
+        set ctx $S(ctx)
+        set out [dict create]
+        set n [llength $path]
+        for {set j 0} {$j < $k} {incr j} {
+            lassign [lindex $S(buf) $j] kind - t
+            if {$kind ne "rapid" || ![::fivax::motion::InCone $ctx $t]} continue
+            set e $j
+            while {$e < $n && [::fivax::motion::InCone $ctx [lindex $S(buf) $e 2]]} {incr e}
+            if {$e >= $n} break
+            set q2 [lindex $S(buf) $e 5 [expr {5 * [lindex $path $e] + 1}]]
+            set ok 1
+            for {set i $j} {$i < $e} {incr i} {
+                set q1 [lindex $S(buf) $i 5 [expr {5 * [lindex $path $i]}]]
+                if {[::fivax::motion::HoldTilt $ctx [lindex $S(buf) $i 2] $q1 $q2] eq ""} {set ok 0}
+            }
+            if {$ok && $e < $k} {
+                for {set i $j} {$i < $e} {incr i} {dict set out $i $q2}
+            }
+            set j [expr {$e - 1}]
+        }
+        return $out
     }
 
     # Recomputes the costs of the held layers from the last written point.
