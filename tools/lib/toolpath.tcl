@@ -18,7 +18,7 @@
 #	  EMPTY   clsf called with no points
 
 namespace eval ::fivax::toolpath {
-    namespace export surface partials normal torusCL raster sweep clsf
+    namespace export surface partials normal torusCL raster sweep clsf goto
     namespace ensemble create -prefixes 0
     namespace upvar ::fivax::num pi Pi
 }
@@ -288,21 +288,21 @@ proc ::fivax::toolpath::clsf {points args} {
         "RAPID"
     set lastAxis ""
     lassign [lindex $points 0] p t
-    lappend lines [Goto [::fivax::vec add $p [::fivax::vec scale ${-clearance} $t]] $t lastAxis]
+    lappend lines [goto [::fivax::vec add $p [::fivax::vec scale ${-clearance} $t]] $t lastAxis]
     lappend lines "FEDRAT/MMPM,[::fivax::num::fixed ${-feed} 4]"
     foreach pt $points {
         lassign $pt p t
-        lappend lines [Goto $p $t lastAxis]
+        lappend lines [goto $p $t lastAxis]
     }
-    lappend lines [Goto [::fivax::vec add $p [::fivax::vec scale ${-clearance} $t]] $t lastAxis] \
+    lappend lines [goto [::fivax::vec add $p [::fivax::vec scale ${-clearance} $t]] $t lastAxis] \
         "COOLNT/OFF" "END-OF-PATH"
     return $lines
 }
 
-# ::fivax::toolpath::Goto --
+# ::fivax::toolpath::goto --
 #	Returns the GOTO line for tip p and axis t; appends i,j,k only when their
 #	text differs from the variable named lastVar (updated).
-proc ::fivax::toolpath::Goto {p t lastVar} {
+proc ::fivax::toolpath::goto {p t lastVar} {
     upvar 1 $lastVar last
     lassign $p x y z
     lassign $t i j k
