@@ -27,6 +27,8 @@ namespace eval ::verifytool {
         {-msys bool 0 "" "map the CL data through the CLSF's MSYS frame (as replay -msys)"}
         {-tol {real min 0} 0.01 MM "tip tolerance at block ends and inside blocks"}
         {-atol {real min 0} 0.05 DEG "tool axis tolerance"}
+        {-mid-tol {maybe real min 0} {} MM "tip tolerance inside blocks (default: -tol)"}
+        {-mid-atol {maybe real min 0} {} DEG "tool axis tolerance inside blocks (default: -atol)"}
         {-controller {maybe word} {} NAME "dialect of the NC text (default: the machine's controller)"}
         {-tool-length {maybe real} {} MM "tool length (default: the CL's TLDATA, else the machine's tool_length)"}
         {-table-offset {maybe vec3} {} "X Y Z" "workpiece-frame position of the table reference point"}
@@ -208,9 +210,9 @@ proc ::verifytool::Run {opts path machine} {
                     Max op midAng $midAng $where
                 }
                 if {[llength $clPoints]} {
-                    lassign [::fivax::clpath nearest $clPoints $P $cursor $window] d i s Q tq
+                    lassign [::fivax::clpath nearest $clPoints $P $t $cursor $window] d i s Q tq
                     if {$d > $tol} {
-                        lassign [::fivax::clpath nearest $clPoints $P $cursor -1] d2 i2 s2 Q2 tq2
+                        lassign [::fivax::clpath nearest $clPoints $P $t $cursor -1] d2 i2 s2 Q2 tq2
                         if {$d2 < $d} {lassign [list $d2 $i2 $s2 $Q2 $tq2] d i s Q tq}
                     }
                     set cursor $i
@@ -231,12 +233,24 @@ proc ::verifytool::Run {opts path machine} {
         $checker destroy
     }
     if {[dict get $op blocks] || $opIndex >= 0} {lappend ops $op}
+    if {![llength $rows]} {
+        set letters [lmap k [dict keys $warnings] {
+            if {[string match "letter *" $k]} {string range $k 7 end} else continue
+        }]
+        ::fivax::Fail TOOL MACHINE "$path: no block gives all of X Y Z [join $names { }] of\
+            machine [dict get $machine name][expr {[llength $letters] ?
+                "; the file writes [join $letters {, }]: is it for another machine?" : ""}]"
+    }
     if {[llength $cl] && [llength $cl] != $opIndex + 1} {
         puts stderr "verify: warning: [llength $cl] CL operations, [expr {$opIndex + 1}] in the NC file"
     }
+    set midTol [dict get $opts -mid-tol]
+    if {$midTol eq ""} {set midTol $tol}
+    set midAtol [dict get $opts -mid-atol]
+    if {$midAtol eq ""} {set midAtol $atol}
     foreach op $ops {
         dict with op {}
-        foreach {key lim what} [list endPos $tol mm endAng $atol deg midPos $tol mm midAng $atol deg] {
+        foreach {key lim what} [list endPos $tol mm endAng $atol deg midPos $midTol mm midAng $midAtol deg] {
             if {[dict get $op $key] > $lim} {
                 lappend problems [format "%s: %s %.6f %s > %g at %s" $name \
                     [dict get {endPos "tip off the CL path" endAng "axis off the CL axis"

@@ -97,31 +97,50 @@ proc ::fivax::clpath::Map {frame v isPoint} {
 }
 
 # ::fivax::clpath::nearest --
-#	Returns {d i s Q t} for tip P: the distance d from P to the nearest
-#	point Q of the polyline of points (the segment from point i to i+1 at
-#	fraction s, the axis t there by spherical interpolation), searching
-#	the segments from index from to from + window (all when window < 0).
-proc ::fivax::clpath::nearest {points P from window} {
+#	Returns {d i s Q tq} for tip P with axis t: the distance d from P to
+#	the nearest point Q of the polyline of points (the segment from point
+#	i to i+1 at fraction s, tq the axis there by spherical interpolation),
+#	searching the segments from index from to from + window (all when
+#	window < 0). Where several segments lie within tie (mm) of the nearest
+#	(the tip dwelling while the axis turns), the one whose axis is closest
+#	to t wins. The fraction s blends the tip's projection and the axis's
+#	position on the great circle, weighted by the segment's tip length and
+#	its axis turn (100 mm per radian).
+proc ::fivax::clpath::nearest {points P t from window {tie 0.002}} {
     set n [llength $points]
     set last [expr {$window < 0 ? $n - 1 : min($n - 1, $from + $window)}]
-    set best {}
+    set cands {}
     set bd Inf
-    if {$n == 1} {set last 0}
     for {set i $from} {$i <= $last} {incr i} {
-        set A [lindex $points $i 0]
         set j [expr {$i + 1 < $n ? $i + 1 : $i}]
-        set B [lindex $points $j 0]
-        lassign [Project $A $B $P] d s
-        if {$d < $bd} {
-            set bd $d
-            set best [list $i $s $j]
+        lassign [Project [lindex $points $i 0] [lindex $points $j 0] $P] d s
+        if {$d <= $bd + $tie} {
+            # where the axis turns much while the tip moves little, the
+            # fraction along the segment is taken from the axis too
+            lassign [Blend [lindex $points $i 0] [lindex $points $j 0] \
+                [lindex $points $i 1] [lindex $points $j 1] $P $t $s] d s
         }
+        if {$d <= $bd + $tie} {
+            lappend cands [list $d $i $s $j]
+            if {$d < $bd} {set bd $d}
+        }
+        # a close match found and the path has moved away from it: done
+        if {$bd < $tie && $d > $bd + $tie + 1.0} break
         if {$i + 1 >= $n} break
     }
-    lassign $best i s j
-    set Q [::fivax::vec::lerp [lindex $points $i 0] [lindex $points $j 0] $s]
-    set t [::fivax::vec::slerp [lindex $points $i 1] [lindex $points $j 1] $s]
-    list $bd $i $s $Q $t
+    set best {}
+    set ba Inf
+    foreach c $cands {
+        lassign $c d i s j
+        if {$d > $bd + $tie} continue
+        set tq [::fivax::vec::slerp [lindex $points $i 1] [lindex $points $j 1] $s]
+        set a [::fivax::vec::angle $tq $t]
+        if {$a < $ba} {
+            set ba $a
+            set best [list $d $i $s [::fivax::vec::lerp [lindex $points $i 0] [lindex $points $j 0] $s] $tq]
+        }
+    }
+    return $best
 }
 
 # ::fivax::clpath::Project --
@@ -139,4 +158,25 @@ proc ::fivax::clpath::Project {A B P} {
     set dy [expr {$py - $ay - $s * $uy}]
     set dz [expr {$pz - $az - $s * $uz}]
     list [expr {sqrt($dx * $dx + $dy * $dy + $dz * $dz)}] $s
+}
+
+# ::fivax::clpath::Blend --
+#	Returns {d s} on segment A-B with axes tA-tB for tip P and axis t:
+#	the fraction s = the tip projection sp blended with the fraction of
+#	t's position along the arc tA-tB, weighted by the squares of |B - A|
+#	and 100 mm times the arc angle; d = |P - Q(s)|.
+proc ::fivax::clpath::Blend {A B tA tB P t sp} {
+    set lp [::fivax::vec::norm [::fivax::vec::sub $B $A]]
+    set th [::fivax::vec::angle $tA $tB]
+    set la [expr {100.0 * $th}]
+    if {$la < 1e-9 || $la < 0.01 * $lp} {
+        return [list [::fivax::vec::norm [::fivax::vec::sub $P [::fivax::vec::lerp $A $B $sp]]] $sp]
+    }
+    set n [::fivax::vec::unit [::fivax::vec::cross $tA $tB]]
+    set tp [::fivax::vec::sub $t [::fivax::vec::scale [::fivax::vec::dot $t $n] $n]]
+    set c [::fivax::vec::cross $tA $tp]
+    set a [expr {atan2([::fivax::vec::dot $c $n], [::fivax::vec::dot $tA $tp]) / $th}]
+    set a [expr {$a < 0.0 ? 0.0 : $a > 1.0 ? 1.0 : $a}]
+    set s [expr {($lp * $lp * $sp + $la * $la * $a) / ($lp * $lp + $la * $la)}]
+    list [::fivax::vec::norm [::fivax::vec::sub $P [::fivax::vec::lerp $A $B $s]]] $s
 }

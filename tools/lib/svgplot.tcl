@@ -153,8 +153,8 @@ proc ::fivax::svgplot::Document {width height title body} {
 # ::fivax::svgplot::Range -- Returns {min max} of the numbers in values (never empty).
 proc ::fivax::svgplot::Range {values} {
     if {![llength $values]} {return {0.0 1.0}}
-    set lo [::tcl::mathfunc::min {*}$values]
-    set hi [::tcl::mathfunc::max {*}$values]
+    set lo [expr {double([::tcl::mathfunc::min {*}$values])}]
+    set hi [expr {double([::tcl::mathfunc::max {*}$values])}]
     if {$hi - $lo < 1e-12 * max(1.0, abs($hi))} {
         set pad [expr {max(1e-6, abs($hi) * 0.05)}]
         return [list [expr {$lo - $pad}] [expr {$hi + $pad}]]
@@ -184,7 +184,7 @@ proc ::fivax::svgplot::Scale {range p0 p1} {
 # ::fivax::svgplot::Apply -- Returns the pixel of value v under map f.
 proc ::fivax::svgplot::Apply {f v} {
     lassign $f lo hi p0 p1
-    expr {$p0 + ($v - $lo) * ($p1 - $p0) / ($hi - $lo)}
+    expr {$p0 + ($v - $lo) * double($p1 - $p0) / ($hi - $lo)}
 }
 
 # ::fivax::svgplot::Map -- Returns the pixels of the values under map f.
@@ -213,7 +213,7 @@ proc ::fivax::svgplot::Polyline {name colour px py} {
 
 # ::fivax::svgplot::Ticks -- Returns about n round tick values covering {lo hi}.
 proc ::fivax::svgplot::Ticks {lo hi {n 6}} {
-    set span [expr {$hi - $lo}]
+    set span [expr {double($hi) - $lo}]
     set raw [expr {$span / $n}]
     set mag [expr {10.0 ** floor(log10($raw))}]
     foreach m {1 2 5 10} {
