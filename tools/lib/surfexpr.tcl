@@ -42,10 +42,12 @@ proc ::fivax::surfexpr::load {path} {
     }
     set surf [dict create file $path lines {}]
     set n 0
+    set last 1
     foreach line [split $text \n] {
         incr n
         set s [string trim $line]
         if {$s eq "" || [string index $s 0] eq "#"} continue
+        set last $n
         if {![regexp {^([A-Za-z_][A-Za-z0-9_]*)\s*=(.*)$} $s -> name rhs]} {
             ::fivax::Fail SURFACE SYNTAX "$path:$n: expected \"x = EXPR\", \"y = EXPR\" or \"z = EXPR\""
         }
@@ -61,7 +63,7 @@ proc ::fivax::surfexpr::load {path} {
     }
     foreach name {x y z} {
         if {![dict exists $surf $name]} {
-            ::fivax::Fail SURFACE MISSING "$path:$n: no line \"$name = EXPR\" in the file"
+            ::fivax::Fail SURFACE MISSING "$path:$last: no line \"$name = EXPR\" in the file"
         }
     }
     return $surf
