@@ -18,7 +18,7 @@ package require Tcl 8.6
 set root [file dirname [file dirname [file normalize [info script]]]]
 set auto_path [linsert $auto_path 0 [file join $root lib]]
 package require fivax 0.1
-foreach f {toolpath.tcl surfexpr.tcl nctool.tcl gouge.tcl} {
+foreach f {toolpath.tcl surfexpr.tcl nctool.tcl gouge.tcl svgplot.tcl} {
     source [file join $root tools lib $f]
 }
 
@@ -38,6 +38,7 @@ namespace eval ::surfpath {
         {-clearance {real min 0} 10 MM "approach, lift and retract distance along the tool axis"}
         {-op word SURFACE_PATH NAME "operation name"}
         {-check bool 0 "" "check every CL point for contact and gouging and print the margins"}
+        {-svg text {} FILE "also draw the path: XY, XZ, YZ projections of the tips with tool-axis whiskers"}
         {-o text {} FILE "output CLSF (required)"}
         {-help bool 0 "" "print this help"}
     }
@@ -113,6 +114,19 @@ proc ::surfpath::main {argv} {
     }
     puts [format "surfpath: %s: %d passes, %d CL points, written to %s" [dict get $surf name] \
         [llength $passes] $n ${-o}]
+    if {${-svg} ne ""} {
+        set pts [concat {*}$passes]
+        set svg [::fivax::svgplot projections -title [format "%s: D %g r %g, lead %g tilt %g deg,\
+            stepover %g step %g mm along %s" [dict get $surf name] ${-D} ${-r} ${-lead} ${-tilt} \
+            ${-stepover} ${-step} ${-along}] -points [lmap p $pts {lindex $p 0}] \
+            -axes [lmap p $pts {lindex $p 1}] -every [expr {max(1, $n / 200)}] -whisker 8]
+        try {
+            ::fivax::svgplot write ${-svg} $svg
+        } trap {POSIX} {msg} {
+            Die "surfpath: cannot write ${-svg}: $msg"
+        }
+        puts "surfpath: wrote ${-svg}"
+    }
     if {${-check}} {
         lassign [Check $surf $passes ${-D} ${-r}] lo hi worst
         puts [format "surfpath: contact check: signed distance surface-cutter from %.3g to %.3g mm\

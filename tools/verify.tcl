@@ -372,7 +372,7 @@ proc ::verifytool::Plots {prefix rows names tol file} {
     }
     set axes [::fivax::svgplot chart -title "Rotary axes of [file tail $file]" \
         -xlabel "block (written motion blocks in file order)" -ylabel "axis value (deg)" \
-        -series $series]
+        -series $series -zero 0]
     set dev {}
     foreach {k label} {8 "tip inside blocks" 6 "tip at block ends vs CL"} {
         set xs {}

@@ -21,6 +21,7 @@ namespace eval ::fivax::svgplot {
 #	  -series {{name xs ys} ...}      each a list of x and of y values
 #	  -limit {value label}            a dashed horizontal line (or {})
 #	  -width 900 -height 420          pixels
+#	  -zero 1                         the y axis includes 0
 proc ::fivax::svgplot::chart {args} {
     variable Colours
     set o [::fivax::opts::parse {
@@ -28,6 +29,7 @@ proc ::fivax::svgplot::chart {args} {
         {-ylabel text "" T "y axis title"} {-series any {} LIST "series"}
         {-limit any {} "VALUE LABEL" "horizontal limit line"}
         {-width {int min 200} 900 PX "width"} {-height {int min 150} 420 PX "height"}
+        {-zero bool 1 "" "the y axis includes 0"}
     } $args "svgplot chart"]
     dict with o {}
     set xs {}
@@ -38,6 +40,7 @@ proc ::fivax::svgplot::chart {args} {
         lappend ys {*}$sy
     }
     if {[llength ${-limit}]} {lappend ys [lindex ${-limit} 0]}
+    if {${-zero}} {lappend ys 0.0}
     set box [list 70 40 [expr {${-width} - 20}] [expr {${-height} - 60}]]
     set fx [Scale [Range $xs] [lindex $box 0] [lindex $box 2]]
     set fy [Scale [Range $ys] [lindex $box 3] [lindex $box 1]]
@@ -58,7 +61,8 @@ proc ::fivax::svgplot::chart {args} {
             y2=\"$y\" stroke=\"#000\" stroke-dasharray=\"6,4\"/>\n"
         lappend legend $label #000 dashed
     }
-    append body [Legend $legend [expr {[lindex $box 2] - 200}] [expr {[lindex $box 1] + 8}]]
+    append body [Legend $legend [expr {[lindex $box 2] - [LegendWidth $legend] - 8}] \
+        [expr {[lindex $box 1] + 8}]]
     Document ${-width} ${-height} ${-title} $body
 }
 
@@ -80,7 +84,7 @@ proc ::fivax::svgplot::projections {args} {
     set k 0
     foreach {name a b} {XY 0 1 XZ 0 2 YZ 1 2} {
         set x0 [expr {20 + $k * $panelW}]
-        set box [list [expr {$x0 + 55}] 40 [expr {$x0 + $panelW - 10}] [expr {${-height} - 60}]]
+        set box [list [expr {$x0 + 55}] 62 [expr {$x0 + $panelW - 10}] [expr {${-height} - 60}]]
         set us [lmap p ${-points} {lindex $p $a}]
         set vs [lmap p ${-points} {lindex $p $b}]
         set ws {}
@@ -102,7 +106,7 @@ proc ::fivax::svgplot::projections {args} {
         set la [string index $name 0]
         set lb [string index $name 1]
         append body [Frame $box $fx $fy "$la (mm)" "$lb (mm)"]
-        append body "<text x=\"[Fmt [expr {([lindex $box 0] + [lindex $box 2]) / 2.0}]]\" y=\"32\"\
+        append body "<text x=\"[Fmt [expr {([lindex $box 0] + [lindex $box 2]) / 2.0}]]\" y=\"56\"\
             text-anchor=\"middle\" font-size=\"13\">$name</text>\n"
         append body "<g class=\"whiskers\" data-name=\"axis $name\" data-count=\"[llength $ws]\"\
             stroke=\"[lindex $Colours 1]\" stroke-width=\"0.6\">\n"
@@ -117,7 +121,7 @@ proc ::fivax::svgplot::projections {args} {
     }
     append body [Legend [list "tool tip path" [lindex $Colours 0] solid \
         "tool axis (every ${-every}th point, [Fmt ${-whisker}] mm)" [lindex $Colours 1] solid] \
-        [expr {${-width} - 330}] [expr {${-height} - 40}]]
+        20 4]
     Document ${-width} ${-height} ${-title} $body
 }
 
@@ -267,7 +271,8 @@ proc ::fivax::svgplot::Frame {box fx fy xlabel ylabel} {
 #	Returns a legend box at x, y for the flat list of {name colour style}.
 proc ::fivax::svgplot::Legend {items x y} {
     set n [expr {[llength $items] / 3}]
-    set out "<g class=\"legend\" font-size=\"11\"><rect x=\"$x\" y=\"$y\" width=\"190\"\
+    set w [LegendWidth $items]
+    set out "<g class=\"legend\" font-size=\"11\"><rect x=\"$x\" y=\"$y\" width=\"$w\"\
         height=\"[expr {$n * 16 + 8}]\" fill=\"#fff\" fill-opacity=\"0.85\" stroke=\"#999\"/>\n"
     set yy [expr {$y + 14}]
     foreach {name colour style} $items {
@@ -278,4 +283,11 @@ proc ::fivax::svgplot::Legend {items x y} {
         incr yy 16
     }
     append out "</g>\n"
+}
+
+# ::fivax::svgplot::LegendWidth -- Returns the pixel width of a legend of {name colour style} items.
+proc ::fivax::svgplot::LegendWidth {items} {
+    set n 0
+    foreach {name - -} $items {set n [expr {max($n, [string length $name])}]}
+    expr {46 + 6 * $n}
 }
