@@ -32,29 +32,12 @@ namespace eval ::kinerrtool {
     }
 }
 
-# ::kinerrtool::Die -- Prints msg on standard error and exits with status 1.
-proc ::kinerrtool::Die {msg} {
-    puts stderr $msg
-    exit 1
-}
-
 # ::kinerrtool::ParseArgs -- Returns {opts ncPath} from argv.
 proc ::kinerrtool::ParseArgs {argv} {
     variable Options
-    try {
-        lassign [::fivax::opts argv $Options $argv kinerr] opts rest
-    } trap {FIVAX OPTION} {msg} {
-        Die $msg
-    }
-    if {[dict get $opts -help]} {
-        puts "usage: tclsh tools/kinerr.tcl -machine M.tcl -d AXIS=DEG ... ?options? part.nc\n\nTip\
-            and axis error of rotary-axis errors along an NC program.\nOptions:\n[::fivax::opts help $Options]"
-        exit 0
-    }
-    if {[llength $rest] != 1} {
-        Die "usage: tclsh tools/kinerr.tcl -machine M.tcl -d AXIS=DEG ... ?options? part.nc (-help for the options)"
-    }
-    if {[dict get $opts -machine] eq ""} {Die "kinerr: -machine is required"}
+    lassign [::fivax::nctool args $Options $argv kinerr \
+        "tclsh tools/kinerr.tcl -machine M.tcl -d AXIS=DEG ... ?options? part.nc" \
+        "Tip and axis error of rotary-axis errors along an NC program." 1 -machine] opts rest
     list $opts [lindex $rest 0]
 }
 
@@ -67,16 +50,16 @@ proc ::kinerrtool::Errors {machine items} {
     foreach item $items {
         if {![regexp {^\s*([A-Za-z][A-Za-z0-9_]*)\s*=\s*(\S+)\s*$} $item -> name value]
                 || [set v [::fivax::num::parse $value]] eq ""} {
-            Die "kinerr: bad -d \"$item\": must be AXIS=DEG, e.g. B=0.01"
+            ::fivax::nctool die "kinerr: bad -d \"$item\": must be AXIS=DEG, e.g. B=0.01"
         }
         set i [lsearch -exact $names $name]
         if {$i < 0} {
-            Die "kinerr: bad -d \"$item\": [dict get $machine name] has no rotary axis $name\
+            ::fivax::nctool die "kinerr: bad -d \"$item\": [dict get $machine name] has no rotary axis $name\
                 (axes: [join $names {, }])"
         }
         lset errors $i [::fivax::num::rad $v]
     }
-    if {![llength $items]} {Die "kinerr: give at least one -d AXIS=DEG"}
+    if {![llength $items]} {::fivax::nctool die "kinerr: give at least one -d AXIS=DEG"}
     return $errors
 }
 
@@ -124,9 +107,9 @@ proc ::kinerrtool::main {argv} {
         set rows [::fivax::kinerr path [$checker model] $joints $errors [dict get $opts -mode]]
         $checker destroy
     } trap {FIVAX} {msg} {
-        Die "kinerr: $msg"
+        ::fivax::nctool die "kinerr: $msg"
     }
-    if {![llength $rows]} {Die "kinerr: $path: no cutting blocks (G1 with axis words)"}
+    if {![llength $rows]} {::fivax::nctool die "kinerr: $path: no cutting blocks (G1 with axis words)"}
     set names [lmap a [dict get $machine chain] {dict get $a name}]
     set sum {0.0 0.0}
     set max {-1 -1}
@@ -170,7 +153,7 @@ proc ::kinerrtool::main {argv} {
             if {![dict get $opts -quiet]} {puts "kinerr: wrote [dict get $opts -svg]"}
         }
     } trap {POSIX} {msg} {
-        Die "kinerr: cannot write: $msg"
+        ::fivax::nctool die "kinerr: cannot write: $msg"
     }
 }
 

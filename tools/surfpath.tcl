@@ -44,29 +44,15 @@ namespace eval ::surfpath {
     }
 }
 
-# ::surfpath::Die -- Prints msg on standard error and exits with status 1.
-proc ::surfpath::Die {msg} {
-    puts stderr $msg
-    exit 1
-}
-
 # ::surfpath::ParseArgs -- Returns the option dict of argv.
 proc ::surfpath::ParseArgs {argv} {
     variable Options
-    try {
-        lassign [::fivax::opts argv $Options $argv surfpath] opts rest
-    } trap {FIVAX OPTION} {msg} {
-        Die $msg
-    }
-    if {[dict get $opts -help]} {
-        puts "usage: tclsh tools/surfpath.tcl ?options? -o out.cls\n\nParallel toroidal-cutter\
-            tool paths on a parametric surface.\nOptions:\n[::fivax::opts help $Options]"
-        exit 0
-    }
-    if {[llength $rest]} {Die "surfpath: unexpected argument \"[lindex $rest 0]\" (-help for the options)"}
-    if {[dict get $opts -o] eq ""} {Die "surfpath: -o FILE is required"}
+    lassign [::fivax::nctool args $Options $argv surfpath \
+        "tclsh tools/surfpath.tcl ?options? -o out.cls" \
+        "Parallel toroidal-cutter tool paths on a parametric surface." 0 -o] opts rest
     if {[dict get $opts -r] > [dict get $opts -D] / 2.0} {
-        Die "surfpath: bad -r \"[dict get $opts -r]\": must be at most D/2 = [expr {[dict get $opts -D] / 2.0}]"
+        ::fivax::nctool die "surfpath: bad -r \"[dict get $opts -r]\": must be at most D/2 =\
+            [expr {[dict get $opts -D] / 2.0}]"
     }
     return $opts
 }
@@ -108,9 +94,9 @@ proc ::surfpath::main {argv} {
             -length ${-length} -rpm ${-rpm} -feed ${-feed} -clearance ${-clearance} -breaks $breaks]
         ::fivax::nctool writeLines ${-o} $lines
     } trap {FIVAX} {msg} {
-        Die "surfpath: $msg"
+        ::fivax::nctool die "surfpath: $msg"
     } trap {POSIX} {msg} {
-        Die "surfpath: cannot write ${-o}: $msg"
+        ::fivax::nctool die "surfpath: cannot write ${-o}: $msg"
     }
     puts [format "surfpath: %s: %d passes, %d CL points, written to %s" [dict get $surf name] \
         [llength $passes] $n ${-o}]
@@ -123,7 +109,7 @@ proc ::surfpath::main {argv} {
         try {
             ::fivax::svgplot write ${-svg} $svg
         } trap {POSIX} {msg} {
-            Die "surfpath: cannot write ${-svg}: $msg"
+            ::fivax::nctool die "surfpath: cannot write ${-svg}: $msg"
         }
         puts "surfpath: wrote ${-svg}"
     }

@@ -21,6 +21,8 @@ foreach f {toolpath.tcl clpath.tcl svgplot.tcl nctool.tcl} {
 }
 
 namespace eval ::verifytool {
+    # S: the state of one run (see Run)
+    variable S
     variable Options {
         {-machine text {} FILE "machine file (required)"}
         {-cl text {} FILE "CLSF the program was posted from: block ends are compared with its CL path"}
@@ -42,12 +44,6 @@ namespace eval ::verifytool {
     }
 }
 
-# ::verifytool::Die -- Prints msg on standard error and exits with status 1.
-proc ::verifytool::Die {msg} {
-    puts stderr $msg
-    exit 1
-}
-
 # ::verifytool::Say -- Prints msg on standard output unless quiet.
 proc ::verifytool::Say {opts msg} {
     if {![dict get $opts -quiet]} {puts $msg}
@@ -56,28 +52,17 @@ proc ::verifytool::Say {opts msg} {
 # ::verifytool::ParseArgs -- Returns {opts ncPath} from argv.
 proc ::verifytool::ParseArgs {argv} {
     variable Options
-    try {
-        lassign [::fivax::opts argv $Options $argv verify] opts rest
-    } trap {FIVAX OPTION} {msg} {
-        Die $msg
-    }
-    if {[dict get $opts -help]} {
-        puts "usage: tclsh tools/verify.tcl -machine M.tcl ?options? part.nc\n\nChecks an NC\
-            program by forward kinematics.\nOptions:\n[::fivax::opts help $Options]"
-        exit 0
-    }
-    if {[llength $rest] != 1} {
-        Die "usage: tclsh tools/verify.tcl -machine M.tcl ?options? part.nc (-help for the options)"
-    }
-    if {[dict get $opts -machine] eq ""} {Die "verify: -machine is required"}
+    lassign [::fivax::nctool args $Options $argv verify \
+        "tclsh tools/verify.tcl -machine M.tcl ?options? part.nc" \
+        "Checks an NC program by forward kinematics." 1 -machine] opts rest
     list $opts [lindex $rest 0]
 }
 
 # ::verifytool::NewOp -- Returns the statistics dict of a new operation name.
 proc ::verifytool::NewOp {name} {
-    dict create name $name blocks 0 feeds 0 endPos 0.0 endPosAt {} endAng 0.0 endAngAt {} \
-        midPos 0.0 midPosAt {} midAng 0.0 midAngAt {} travel {0.0 0.0} retracts 0 \
-        limits 0 limitAt {} feedIssues 0 feedAt {} matched 0 moves 0
+    dict create name $name blocks 0 feeds 0 moves 0 endPos 0.0 endPosAt {} endAng 0.0 \
+        endAngAt {} midPos 0.0 midPosAt {} midAng 0.0 midAngAt {} travel {0.0 0.0} \
+        retracts 0 limits 0 limitAt {} feedIssues 0 feedAt {}
 }
 
 # ::verifytool::Max --
@@ -92,176 +77,226 @@ proc ::verifytool::Max {opVar key value where} {
 }
 
 # ::verifytool::Run --
-#	Checks the NC file path with the options; returns {ops rows problems}:
-#	the operation statistics, the CSV rows and the list of failed checks.
+#	Checks the NC file path with the options on machine; returns {ops
+#	rows problems warnings names}: the operation statistics, one row per
+#	motion block (see Csv), the failed checks, the counts of words not
+#	understood by kind, and the rotary names (chain order).
 proc ::verifytool::Run {opts path machine} {
-    set checker [::fivax::verify create $machine -table-offset [dict get $opts -table-offset] \
+    variable S
+    array unset S
+    array set S [list opts $opts path $path machine $machine ops {} op [NewOp program] \
+        opIndex -1 clPoints {} cursor 0 prev {} prevMotion "" rows {} warnings {} \
+        names [lmap a [dict get $machine chain] {dict get $a name}] \
+        rollover [lmap a [dict get $machine chain] {dict get $a rollover}] cl {}]
+    set S(checker) [::fivax::verify create $machine -table-offset [dict get $opts -table-offset] \
         -controller [dict get $opts -controller]]
-    set cl {}
     if {[dict get $opts -cl] ne ""} {
-        set cl [::fivax::clpath read [dict get $opts -cl] [dict get $opts -msys] \
+        set S(cl) [::fivax::clpath read [dict get $opts -cl] [dict get $opts -msys] \
             [dict get $opts -arc-tol]]
     }
-    set names [lmap a [dict get $machine chain] {dict get $a name}]
-    set rollover [lmap a [dict get $machine chain] {dict get $a rollover}]
-    set feedMax [dict get $machine feed_max]
-    set invMax [dict get $machine inverse_time_max]
-    set tol [dict get $opts -tol]
-    set atol [dict get $opts -atol]
-    set window [dict get $opts -window]
-    set warnings [dict create]
-    set ops {}
-    set op [NewOp program]
-    set opIndex -1
-    set clPoints {}
-    set cursor 0
-    set prev {}
-    set prevMotion ""
-    set rows {}
-    set problems {}
+    $S(checker) setTool [dict get $opts -tool-length]
     set lineNo 0
-    set chan [::fivax::nctool::open $path]
+    set chan [::fivax::nctool open $path]
     try {
         while {[gets $chan line] >= 0} {
             incr lineNo
-            set where $path:$lineNo
-            set blk [$checker read $line]
-            foreach c [dict get $blk comments] {
-                if {[regexp {^\s*OPERATION\s+(.*?)\s*$} $c -> name]} {
-                    if {[dict get $op blocks] || $opIndex >= 0} {lappend ops $op}
-                    set op [NewOp $name]
-                    incr opIndex
-                    set prev {}
-                    set prevMotion ""
-                    set cursor 0
-                    set clPoints {}
-                    set len [dict get $opts -tool-length]
-                    if {$opIndex < [llength $cl]} {
-                        set clop [lindex $cl $opIndex]
-                        set clPoints [dict get $clop points]
-                        if {$len eq ""} {set len [dict get $clop length]}
-                    }
-                    $checker setTool $len
-                }
-            }
-            if {![dict get $blk block]} continue
-            dict incr op blocks
-            foreach {kind word} [dict get $blk unknown] {
-                if {![dict exists $warnings $kind]} {
-                    puts stderr "verify: $where: warning: $kind not understood ($word); read as if absent"
-                }
-                dict incr warnings $kind
-            }
-            foreach axis [dict get $blk limit] {
-                dict incr op limits
-                if {[dict get $op limitAt] eq ""} {dict set op limitAt "$where ($axis)"}
-            }
-            set joints [dict get $blk joints]
-            set moved [dict get $blk moved]
-            set motion [dict get $blk motion]
-            if {$joints eq "" || ![llength $moved]} {
-                if {[llength $moved]} {set prev {}}
-                continue
-            }
-            lassign [$checker tip $joints] P t
-            dict incr op moves
-            # rotary travel (a rotary that rolls over turns the shortest way)
-            if {$prev ne ""} {
-                set tr {}
-                foreach i {3 4} roll $rollover acc [dict get $op travel] {
-                    set d [expr {[lindex $joints $i] - [lindex $prev 0 $i]}]
-                    if {$roll} {set d [expr {$d - 2.0 * acos(-1) * round($d / (2.0 * acos(-1)))}]}
-                    lappend tr [expr {$acc + abs($d)}]
-                }
-                dict set op travel $tr
-            }
-            if {$motion == 0 && $prevMotion == 1} {dict incr op retracts}
-            set endPos ""
-            set endAng ""
-            set midPos ""
-            set midAng ""
-            if {$motion == 1} {
-                dict incr op feeds
-                set F [dict get $blk F]
-                set mode [dict get $blk mode]
-                set issue ""
-                if {$mode eq "inverse" && $F eq ""} {
-                    set issue "G93 block without F"
-                } elseif {$F eq "" && [dict get $blk feed] eq ""} {
-                    set issue "feed move without any F"
-                } else {
-                    set f [expr {$F ne "" ? $F : [dict get $blk feed]}]
-                    if {$f <= 0} {
-                        set issue "F $f is not positive"
-                    } elseif {$mode eq "inverse" && $f > $invMax} {
-                        set issue "inverse-time F $f above the machine's inverse_time_max $invMax"
-                    } elseif {$mode eq "direct" && $f > $feedMax} {
-                        set issue "F $f mm/min above the machine's feed_max $feedMax"
-                    }
-                }
-                if {$issue ne ""} {
-                    dict incr op feedIssues
-                    if {[dict get $op feedAt] eq ""} {dict set op feedAt "$where: $issue"}
-                }
-                if {$prev ne ""} {
-                    lassign $prev j0 P0 t0
-                    lassign [$checker interior $j0 $joints $P0 $P $t0 $t] midPos midAng
-                    Max op midPos $midPos $where
-                    Max op midAng $midAng $where
-                }
-                if {[llength $clPoints]} {
-                    lassign [::fivax::clpath nearest $clPoints $P $t $cursor $window] d i s Q tq
-                    if {$d > $tol} {
-                        lassign [::fivax::clpath nearest $clPoints $P $t $cursor -1] d2 i2 s2 Q2 tq2
-                        if {$d2 < $d} {lassign [list $d2 $i2 $s2 $Q2 $tq2] d i s Q tq}
-                    }
-                    set cursor $i
-                    set endPos $d
-                    set endAng [::fivax::num::deg [::fivax::vec::angle $t $tq]]
-                    dict incr op matched
-                    Max op endPos $endPos $where
-                    Max op endAng $endAng $where
-                }
-            }
-            lappend rows [list $lineNo [dict get $op name] $motion $joints $P $t \
-                $endPos $endAng $midPos $midAng [dict get $blk F] [dict get $blk mode]]
-            set prev [list $joints $P $t]
-            set prevMotion $motion
+            Line $line $path:$lineNo $lineNo
         }
     } finally {
         close $chan
-        $checker destroy
+        $S(checker) destroy
     }
-    if {[dict get $op blocks] || $opIndex >= 0} {lappend ops $op}
-    if {![llength $rows]} {
-        set letters [lmap k [dict keys $warnings] {
-            if {[string match "letter *" $k]} {string range $k 7 end} else continue
-        }]
-        ::fivax::Fail TOOL MACHINE "$path: no block gives all of X Y Z [join $names { }] of\
-            machine [dict get $machine name][expr {[llength $letters] ?
-                "; the file writes [join $letters {, }]: is it for another machine?" : ""}]"
+    if {[dict get $S(op) blocks] || $S(opIndex) >= 0} {lappend S(ops) $S(op)}
+    if {![llength $S(rows)]} {NoRows}
+    if {[llength $S(cl)] && [llength $S(cl)] != $S(opIndex) + 1} {
+        puts stderr "verify: warning: [llength $S(cl)] CL operations, [expr {$S(opIndex) + 1}] in the NC file"
     }
-    if {[llength $cl] && [llength $cl] != $opIndex + 1} {
-        puts stderr "verify: warning: [llength $cl] CL operations, [expr {$opIndex + 1}] in the NC file"
+    list $S(ops) $S(rows) [Problems] $S(warnings) $S(names)
+}
+
+# ::verifytool::Line -- Checks one NC line (at where, line number n).
+proc ::verifytool::Line {line where n} {
+    variable S
+    set blk [$S(checker) read $line]
+    foreach c [dict get $blk comments] {
+        if {[regexp {^\s*OPERATION\s+(.*?)\s*$} $c -> name]} {StartOp $name}
     }
+    if {![dict get $blk block]} return
+    dict incr S(op) blocks
+    foreach {kind word} [dict get $blk unknown] {
+        if {![dict exists $S(warnings) $kind]} {
+            puts stderr "verify: $where: warning: $kind not understood ($word); read as if absent"
+        }
+        dict incr S(warnings) $kind
+    }
+    foreach axis [dict get $blk limit] {
+        dict incr S(op) limits
+        if {[dict get $S(op) limitAt] eq ""} {dict set S(op) limitAt "$where ($axis)"}
+    }
+    set joints [dict get $blk joints]
+    if {$joints eq "" || ![llength [dict get $blk moved]]} {
+        if {[llength [dict get $blk moved]]} {set S(prev) {}}
+        return
+    }
+    lassign [$S(checker) tip $joints] P t
+    dict incr S(op) moves
+    Travel $joints
+    set motion [dict get $blk motion]
+    if {$motion == 0 && $S(prevMotion) == 1} {dict incr S(op) retracts}
+    set figures {{} {} {} {}}
+    if {$motion == 1} {set figures [Cutting $blk $joints $P $t $where]}
+    lappend S(rows) [list $n [dict get $S(op) name] $motion $joints $P $t {*}$figures \
+        [dict get $blk F] [dict get $blk mode]]
+    set S(prev) [list $joints $P $t]
+    set S(prevMotion) $motion
+}
+
+# ::verifytool::StartOp --
+#	Starts operation name: its statistics, the matching CL operation (by
+#	order) and its tool length.
+proc ::verifytool::StartOp {name} {
+    variable S
+    if {[dict get $S(op) blocks] || $S(opIndex) >= 0} {lappend S(ops) $S(op)}
+    set S(op) [NewOp $name]
+    incr S(opIndex)
+    set S(prev) {}
+    set S(prevMotion) ""
+    set S(cursor) 0
+    set S(clPoints) {}
+    set len [dict get $S(opts) -tool-length]
+    if {$S(opIndex) < [llength $S(cl)]} {
+        set clop [lindex $S(cl) $S(opIndex)]
+        set S(clPoints) [dict get $clop points]
+        if {$len eq ""} {set len [dict get $clop length]}
+    }
+    $S(checker) setTool $len
+}
+
+# ::verifytool::Travel --
+#	Adds the rotary motion from the previous block to joints (a rotary
+#	that rolls over turns the shortest way).
+proc ::verifytool::Travel {joints} {
+    variable S
+    if {$S(prev) eq ""} return
+    set twoPi [expr {2.0 * acos(-1)}]
+    set tr {}
+    foreach i {3 4} roll $S(rollover) acc [dict get $S(op) travel] {
+        set d [expr {[lindex $joints $i] - [lindex $S(prev) 0 $i]}]
+        if {$roll} {set d [expr {$d - $twoPi * round($d / $twoPi)}]}
+        lappend tr [expr {$acc + abs($d)}]
+    }
+    dict set S(op) travel $tr
+}
+
+# ::verifytool::Cutting --
+#	Checks a cutting block (G1) ending at joints, tip P, axis t: its feed,
+#	the inside of the move, and the end against the CL path. Returns
+#	{endPos endAng midPos midAng} ("" where not measured).
+proc ::verifytool::Cutting {blk joints P t where} {
+    variable S
+    dict incr S(op) feeds
+    set issue [FeedIssue $blk]
+    if {$issue ne ""} {
+        dict incr S(op) feedIssues
+        if {[dict get $S(op) feedAt] eq ""} {dict set S(op) feedAt "$where: $issue"}
+    }
+    set out {{} {} {} {}}
+    if {$S(prev) ne ""} {
+        lassign $S(prev) j0 P0 t0
+        lassign [$S(checker) interior $j0 $joints $P0 $P $t0 $t] midPos midAng
+        Max S(op) midPos $midPos $where
+        Max S(op) midAng $midAng $where
+        lset out 2 $midPos
+        lset out 3 $midAng
+    }
+    if {[llength $S(clPoints)]} {
+        lassign [Match $P $t] endPos endAng
+        Max S(op) endPos $endPos $where
+        Max S(op) endAng $endAng $where
+        lset out 0 $endPos
+        lset out 1 $endAng
+    }
+    return $out
+}
+
+# ::verifytool::FeedIssue --
+#	Returns what is wrong with the feed of cutting block blk ("" if
+#	nothing): G93 without F, no F at all, F not positive, F above the
+#	machine's feed_max (G94) or inverse_time_max (G93).
+proc ::verifytool::FeedIssue {blk} {
+    variable S
+    set F [dict get $blk F]
+    set mode [dict get $blk mode]
+    if {$mode eq "inverse" && $F eq ""} {return "G93 block without F"}
+    set f [expr {$F ne "" ? $F : [dict get $blk feed]}]
+    if {$f eq ""} {return "feed move without any F"}
+    if {$f <= 0} {return "F $f is not positive"}
+    set invMax [dict get $S(machine) inverse_time_max]
+    set feedMax [dict get $S(machine) feed_max]
+    if {$mode eq "inverse" && $f > $invMax} {
+        return "inverse-time F $f above the machine's inverse_time_max $invMax"
+    }
+    if {$mode eq "direct" && $f > $feedMax} {
+        return "F $f mm/min above the machine's feed_max $feedMax"
+    }
+    return ""
+}
+
+# ::verifytool::Match --
+#	Returns {d a}: the distance (mm) of tip P from the CL path and the
+#	angle (deg) of axis t from the CL axis there, searching ahead of the
+#	last match (the whole operation when the window finds nothing within
+#	-tol); moves the cursor to the match.
+proc ::verifytool::Match {P t} {
+    variable S
+    lassign [::fivax::clpath nearest $S(clPoints) $P $t $S(cursor) \
+        [dict get $S(opts) -window]] d i s Q tq
+    if {$d > [dict get $S(opts) -tol]} {
+        set far [::fivax::clpath nearest $S(clPoints) $P $t $S(cursor) -1]
+        if {[lindex $far 0] < $d} {lassign $far d i s Q tq}
+    }
+    set S(cursor) $i
+    list $d [::fivax::num::deg [::fivax::vec::angle $t $tq]]
+}
+
+# ::verifytool::NoRows --
+#	Fails: no block gave every axis of the machine (naming the letters
+#	the file writes that the machine lacks).
+proc ::verifytool::NoRows {} {
+    variable S
+    set letters [lmap k [dict keys $S(warnings)] {
+        if {[string match "letter *" $k]} {string range $k 7 end} else continue
+    }]
+    ::fivax::Fail TOOL MACHINE "$S(path): no block gives all of X Y Z [join $S(names) { }] of\
+        machine [dict get $S(machine) name][expr {[llength $letters] ?
+            "; the file writes [join $letters {, }]: is it for another machine?" : ""}]"
+}
+
+# ::verifytool::Problems -- Returns the failed checks of the operations, one text each.
+proc ::verifytool::Problems {} {
+    variable S
+    set opts $S(opts)
+    set tol [dict get $opts -tol]
+    set atol [dict get $opts -atol]
     set midTol [dict get $opts -mid-tol]
     if {$midTol eq ""} {set midTol $tol}
     set midAtol [dict get $opts -mid-atol]
     if {$midAtol eq ""} {set midAtol $atol}
-    foreach op $ops {
+    set problems {}
+    foreach op $S(ops) {
         dict with op {}
-        foreach {key lim what} [list endPos $tol mm endAng $atol deg midPos $midTol mm midAng $midAtol deg] {
+        foreach {key lim unit what} [list endPos $tol mm "tip off the CL path" \
+                endAng $atol deg "axis off the CL axis" midPos $midTol mm "tip inside a block" \
+                midAng $midAtol deg "axis inside a block"] {
             if {[dict get $op $key] > $lim} {
-                lappend problems [format "%s: %s %.6f %s > %g at %s" $name \
-                    [dict get {endPos "tip off the CL path" endAng "axis off the CL axis"
-                        midPos "tip inside a block" midAng "axis inside a block"} $key] \
-                    [dict get $op $key] $what $lim [dict get $op ${key}At]]
+                lappend problems [format "%s: %s %.6f %s > %g at %s" $name $what \
+                    [dict get $op $key] $unit $lim [dict get $op ${key}At]]
             }
         }
         if {$limits} {lappend problems "$name: $limits rotary values outside the limits, first at $limitAt"}
         if {$feedIssues} {lappend problems "$name: $feedIssues feed anomalies, first at $feedAt"}
     }
-    list $ops $rows $problems $warnings $names
+    return $problems
 }
 
 # ::verifytool::Report -- Prints the per-operation figures and the worst line.
@@ -404,14 +439,14 @@ proc ::verifytool::main {argv} {
         set machine [::fivax::machine load [dict get $opts -machine]]
         if {[dict get $opts -controller] ne "" &&
                 [dict get $opts -controller] ni [::fivax::verify dialects]} {
-            Die "verify: bad -controller \"[dict get $opts -controller]\": must be one of\
+            ::fivax::nctool die "verify: bad -controller \"[dict get $opts -controller]\": must be one of\
                 [join [::fivax::verify dialects] {, }]"
         }
         lassign [Run $opts $path $machine] ops rows problems warnings names
     } trap {FIVAX} {msg} {
-        Die "verify: $msg"
+        ::fivax::nctool die "verify: $msg"
     } trap {POSIX} {msg} {
-        Die "verify: $msg"
+        ::fivax::nctool die "verify: $msg"
     }
     Say $opts "verify: [file tail $path] on [dict get $machine name] ([dict get $opts -machine])"
     Report $opts $ops $names [expr {[dict get $opts -cl] ne ""}]
@@ -435,7 +470,7 @@ proc ::verifytool::main {argv} {
             }
         }
     } trap {POSIX} {msg} {
-        Die "verify: cannot write: $msg"
+        ::fivax::nctool die "verify: cannot write: $msg"
     }
     if {[llength $problems]} {
         foreach p $problems {puts "verify: FAIL: $p"}

@@ -1,12 +1,46 @@
 # nctool.tcl --
-#	File helpers the command-line tools share: opening an NC or data file
-#	for reading with a clear error, writing lines through a temporary file
-#	beside the target (renamed at the end: a failed run leaves no partial
-#	file), and CSV quoting. Needs the fivax package (Fail).
+#	Helpers the command-line tools share: the command line (options by
+#	fivax::opts, -help from the same table, errors on standard error with
+#	exit 1), opening an NC or data file for reading with a clear error,
+#	writing lines through a temporary file beside the target (renamed at
+#	the end: a failed run leaves no partial file), and CSV quoting. Needs
+#	the fivax package (opts, Fail).
 
 namespace eval ::fivax::nctool {
-    namespace export open writeLines csvField
+    namespace export args die open writeLines csvField
     namespace ensemble create -prefixes 0
+}
+
+# ::fivax::nctool::die -- Prints msg on standard error and exits with status 1.
+proc ::fivax::nctool::die {msg} {
+    puts stderr $msg
+    exit 1
+}
+
+# ::fivax::nctool::args --
+#	Returns {opts rest}: the options of the command line argv by table
+#	(fivax::opts argv; who names the tool in messages) and the words
+#	after them. A bad option exits 1 with its message; -help prints
+#	"usage: USAGE", the summary and the option list and exits 0. With
+#	count >= 0, exactly count words must follow the options; every option
+#	named in required must be given.
+proc ::fivax::nctool::args {table argv who usage summary {count -1} {required {}}} {
+    try {
+        lassign [::fivax::opts::argv $table $argv $who] opts rest
+    } trap {FIVAX OPTION} {msg} {
+        die $msg
+    }
+    if {[dict exists $opts -help] && [dict get $opts -help]} {
+        puts "usage: $usage\n\n$summary\nOptions:\n[::fivax::opts::help $table]"
+        exit 0
+    }
+    if {$count >= 0 && [llength $rest] != $count} {
+        die "usage: $usage (-help for the options)"
+    }
+    foreach name $required {
+        if {[dict get $opts $name] eq ""} {die "$who: $name is required"}
+    }
+    list $opts $rest
 }
 
 # ::fivax::nctool::open --
