@@ -97,7 +97,7 @@ proc runReplay {args} {
 #	wrote (-o), against its CL file (the last word), with the replay's
 #	-machine, -msys, -table-offset, -controller and -arc-tol; inside
 #	blocks with the replay's -tol and -atol plus 0.001 of output rounding
-#	(0: not linearised, so not checked). Returns {code output}; {0 {}}
+#	(-tol 0: not linearised, -atol 0: axis not linearised; not checked). Returns {code output}; {0 {}}
 #	when nothing was written.
 proc verifyReplayOutput {argList} {
     set opts [dict create -machine [file join $::fivaxRoot machines hh-tilt45.tcl]]
@@ -123,8 +123,12 @@ proc verifyReplayOutput {argList} {
     # the output rounding of the block ends (as e2eSpec: 0.001 mm)
     set tol [expr {[dict exists $opts -tol] ? [dict get $opts -tol] : 0.01}]
     set atol [expr {[dict exists $opts -atol] ? [dict get $opts -atol] : 0.05}]
-    lappend vargs -mid-tol [expr {$tol == 0 ? 1e9 : $tol + 0.001}] \
-        -mid-atol [expr {$atol == 0 ? 1e9 : $atol + 0.001}]
+    if {$tol == 0} {
+        # no linearisation at all
+        lappend vargs -mid-tol 1e9 -mid-atol 1e9
+    } else {
+        lappend vargs -mid-tol [expr {$tol + 0.001}] -mid-atol [expr {$atol == 0 ? 1e9 : $atol + 0.001}]
+    }
     set code [catch {exec [info nameofexecutable] [file join $::fivaxRoot tools verify.tcl] \
         {*}$vargs [dict get $opts -o] 2>@1} out]
     list $code [regsub {\n?child process exited abnormally$} $out ""]
