@@ -29,7 +29,7 @@ namespace eval ::fivax::machine {
         home_rotaries 0 entry_feed {}
     }
     variable topRequired {name axes}
-    variable axisKeys {side direction point sense min max continuous prefer rollover}
+    variable axisKeys {side direction point sense min max continuous prefer rollover offset}
     # Stand-in for an unlimited continuous axis (radians).
     variable unlimited 1e300
 }
@@ -270,6 +270,14 @@ proc ::fivax::machine::ParseAxes {src family axesText alpha yH} {
         if {[dict exists $p prefer]} {
             set prefer [Choice $src prefer [dict get $p prefer] {positive negative none} $what]
         }
+        set offset 0.0
+        if {[dict exists $p offset]} {
+            set offset [::fivax::num::rad [Real $src offset [dict get $p offset] $what]]
+            if {!(abs($offset) <= [::fivax::num::rad 360.0])} {
+                ::fivax::Fail MACHINE VALUE \
+                    "$src: ${what}'offset' must lie within -360..360: [dict get $p offset]"
+            }
+        }
         set lim {}
         foreach key {min max} sign {-1 1} {
             if {[dict exists $p $key]} {
@@ -312,7 +320,7 @@ proc ::fivax::machine::ParseAxes {src family axesText alpha yH} {
                           sense [expr {int($sense)}] min [dict get $lim min] \
                           max [dict get $lim max] continuous $continuous \
                           prefer [dict get {positive 1 negative -1 none 0} $prefer] \
-                          rollover $rollover]
+                          rollover $rollover offset $offset]
     }
     if {[llength $axes] != 2} {
         ::fivax::Fail MACHINE AXES \

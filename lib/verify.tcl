@@ -1,20 +1,75 @@
 # verify.tcl --
-#	Checks written NC blocks against the CL data they stand for: reads the
-#	axis words back from the block text (so output rounding counts), runs
-#	the forward kinematics (never the inverse) and measures the tip and axis
-#	deviation at each CL point and, for cutting moves, at the quarter points
-#	of the controller's linear joint interpolation against the straight CL
-#	segment and the great circle of the tool axis (spec section 7). It knows
-#	nothing of how the planner chose the blocks: it depends on kin only.
+#	Checks NC blocks by forward kinematics (never the inverse). A Checker
+#	reads the words of each block from the NC text (so output rounding
+#	counts), keeps the controller's modal state (axis values, G0/G1,
+#	G93/G94, F), counts rotary values outside the machine's limits, and
+#	measures the tool tip and axis: at a block end against a CL target,
+#	and at the quarter points of the controller's linear joint
+#	interpolation against a straight segment and the great circle of the
+#	tool axis (spec section 7). Two hosts share this code: the post checks
+#	each block it writes (method block, with the planner's CL target), and
+#	tools/verify.tcl checks whole NC files of any post (methods read, tip,
+#	deviation, interior). It knows nothing of how the planner chose the
+#	blocks: it depends on kin only.
+#
+#	Dialects: the text of a block is turned into address words by the
+#	Dialects table below (comments, lines that are no blocks, the word
+#	pattern); what the words mean is the ISO meaning common to fanuc and
+#	linuxcnc (G0 G1 G93 G94, X Y Z, the machine's rotary letters, F), with
+#	the canned cycles (G73 G76 G81..G89 with G98/G99 and R: the tool goes
+#	to X Y, down to Z, and back to the initial level or the R plane; G80
+#	or a motion code ends them) and G53 (its axis words are machine
+#	coordinates: those axes are unknown until written again).
 
 namespace eval ::fivax::verify {
-    namespace export create
+    namespace export create dialects
     namespace ensemble create -prefixes 0
     namespace upvar ::fivax::num pi pi
     variable Options {
         {-table-offset {maybe vec3} {} "X Y Z"
             "workpiece-frame position of the table reference point (default: the machine's table_offset)"}
+        {-controller {maybe word} {} NAME
+            "dialect of the NC text (default: the machine's controller; a dialect without an entry below is read as fanuc)"}
     }
+
+    # How the words of a block are found, per dialect:
+    #   comment  regexp of comment text, removed before reading words; the
+    #            text of each (the first capture group) is returned
+    #   skip     regexp of whole lines that are not blocks (% and O1000)
+    #   word     regexp of one address word, matched with -all -inline
+    #            (one flat pattern: capture groups cost 30 times more)
+    #   split    how a word splits into letter and value: "letter" (one
+    #            letter, then the number)
+    #
+    # Adding a dialect: give it an entry here, and where its words are not
+    # ISO address words, a 'map' list of {regexp replacement} pairs applied
+    # to the block text first, which rewrites them into ISO words. Klartext
+    # (heidenhain) would map "^\s*\d+\s+L\s" to "G1 ", "\sFMAX\b" to " G0",
+    # drop "\sR[0LR]\b" and "\sM\d+" stays as it is: its signed words
+    # "X+1.000 B+10.000 F1000" already match the word pattern. Sinumerik
+    # comments start with ";" (comment {;(.*)$}); "A3=" style orientation
+    # words would need a map. The entries:
+    variable Dialects {
+        fanuc {
+            comment {\(([^)]*)\)}
+            skip {^\s*(%|O\d+\s*(\(.*\))?\s*)$}
+            word {[A-Z][-+.0-9]+}
+            map {}
+        }
+        linuxcnc {
+            comment {\(([^)]*)\)|;(.*)$}
+            skip {^\s*%\s*$}
+            word {[A-Z][-+.0-9]+}
+            map {}
+        }
+    }
+    # G codes whose meaning the checker follows; others are reported.
+    variable KnownG {0 1 4 17 20 21 40 43 49 53 54 55 56 57 58 59 73 76 80 81 82 83 84 85
+        86 87 88 89 90 93 94 98 99}
+    # Canned cycles.
+    variable CycleG {73 76 81 82 83 84 85 86 87 88 89}
+    # Letters understood besides X Y Z and the rotaries.
+    variable KnownLetters {N G F S T M H O P Q R}
 }
 
 # ::fivax::verify::create --
@@ -25,15 +80,26 @@ proc ::fivax::verify::create {machine args} {
     Checker new $machine [::fivax::opts::parse $Options $args "verify create"]
 }
 
+# ::fivax::verify::dialects -- Returns the names of the dialects the checker reads.
+proc ::fivax::verify::dialects {} {
+    variable Dialects
+    dict keys $Dialects
+}
+
 oo::class create ::fivax::verify::Checker {
-    # S: machine, tableOffset, names, rollover, limits, model, the modal
-    # axis values X Y Z q1 q2, prev (the last checked block) and the
+    # S: machine, tableOffset, dialect (its table entry), names, rollover,
+    # limits, model, the modal state X Y Z q1 q2 motion (0/1) mode
+    # (direct/inverse) F, prev (the last checked block) and the
     # statistics (see summary).
     variable S
 
     constructor {machine opts} {
         set S(machine) $machine
         set S(tableOffset) [dict get $opts -table-offset]
+        set name [dict get $opts -controller]
+        if {$name eq ""} {set name [dict get $machine controller]}
+        if {![dict exists $::fivax::verify::Dialects $name]} {set name fanuc}
+        set S(dialect) [dict get $::fivax::verify::Dialects $name]
         set chain [dict get $machine chain]
         set S(names) [lmap axis $chain {dict get $axis name}]
         set S(rollover) [lmap axis $chain {dict get $axis rollover}]
@@ -44,10 +110,10 @@ oo::class create ::fivax::verify::Checker {
                 list [dict get $axis min] [dict get $axis max]
             }
         }]
-        array set S {X {} Y {} Z {} R {} q1 {} q2 {} prev {} cycle 0 return 98 initial {} bottom {}
-            checked 0 segments 0
-            maxPos 0.0 maxAng 0.0 maxMidPos 0.0 maxMidAng 0.0 limitViolations 0
-            worst {} worstMid {}}
+        array set S {X {} Y {} Z {} q1 {} q2 {} motion {} mode direct F {} prev {}
+            cycle 0 return 98 initial {} bottom {} R {}
+            checked 0 segments 0 maxPos 0.0 maxAng 0.0 maxMidPos 0.0 maxMidAng 0.0
+            limitViolations 0 worst {} worstMid {}}
         my setTool [dict get $machine tool_length]
     }
 
@@ -57,102 +123,207 @@ oo::class create ::fivax::verify::Checker {
         set S(prev) {}
     }
 
-    # Reads the axis words of the NC line, updates the modal machine
-    # state, and when move (a motion move record) carries a CL target
-    # (P, t) measures the deviation.
-    method block {line move} {
-        namespace upvar ::fivax::num pi pi
-        set text [regsub -all {\([^)]*\)} $line ""]
-        set hole 0
-        # (a flat pattern: nested groups with -all -inline cost 30 times more)
-        foreach word [regexp -all -inline {[A-Z][-+.0-9]+} $text] {
-            set letter [string index $word 0]
+    # Returns the kin model in use.
+    method model {} {
+        return $S(model)
+    }
+
+    # Reads one NC line and updates the modal state. Returns a dict:
+    #   block    1 when the line is a block (not %, O1000 or empty)
+    #   motion   0 (G0), 1 (G1) or "" (no motion mode yet): modal
+    #   moved    the axis names written in this block (X Y Z and rotaries)
+    #   joints   {X Y Z q1 q2} (rotaries in radians, chain order) after
+    #            the block, or "" while an axis is still unknown
+    #   mode     direct (G94) or inverse (G93): modal
+    #   F        the F word of this block ("" if none); feed: modal F
+    #   words    the words of the block, {letter value} pairs
+    #   comments the comment texts
+    #   limit    the rotary names whose written value is outside limits
+    #   unknown  {kind word} pairs: words the checker does not follow
+    #            (kind: "letter E", "G2", "text")
+    #   hole     1 when the block drills a hole of a canned cycle: joints
+    #            are then at the hole's bottom, and the modal Z afterwards
+    #            is the level the cycle returns to
+    method read {line} {
+        set text $line
+        foreach {re sub} [dict get $S(dialect) map] {
+            regsub -all -- $re $text $sub text
+        }
+        set comments {}
+        set cre [dict get $S(dialect) comment]
+        if {[string first ( $text] >= 0 || [string first ";" $text] >= 0} {
+            foreach {- a b} [regexp -all -inline -- $cre $text] {
+                lappend comments [expr {$a ne "" ? $a : $b}]
+            }
+            regsub -all -- $cre $text "" text
+        }
+        set out [dict create block 0 motion $S(motion) moved {} joints {} mode $S(mode) \
+            F "" feed $S(F) words {} comments $comments limit {} unknown {} hole 0]
+        if {[string trim $text] eq "" || [regexp -- [dict get $S(dialect) skip] $line]} {
+            dict set out joints [my Joints]
+            return $out
+        }
+        dict set out block 1
+        set words [regexp -all -inline -- [dict get $S(dialect) word] $text]
+        set rest [string trim [regsub -all -- [dict get $S(dialect) word] $text ""]]
+        set unknown {}
+        if {$rest ne ""} {lappend unknown text $rest}
+        set pairs {}
+        set moved {}
+        set limit {}
+        # G codes first: they decide what the axis words mean
+        set machineFrame 0
+        foreach word $words {
+            if {[string index $word 0] ne "G"} continue
             set value [string range $word 1 end]
             if {![string is double -strict $value]} continue
-            if {$letter in {X Y Z R}} {
-                # in a canned cycle Z is the hole's bottom, kept apart
-                set S([expr {$S(cycle) && $letter eq "Z" ? "bottom" : $letter}]) $value
+            set g [expr {$value == round($value) ? int($value) : $value}]
+            if {$g in $::fivax::verify::CycleG} {
+                if {!$S(cycle)} {
+                    set S(initial) $S(Z)
+                    set S(bottom) $S(Z)
+                }
+                set S(cycle) 1
+            } elseif {$g in {98 99}} {
+                set S(return) $g
+            } elseif {$g in {0 1 2 3 80}} {
+                set S(cycle) 0
+            } elseif {$g == 53} {
+                set machineFrame 1
+            }
+        }
+        set hole 0
+        foreach word $words {
+            set letter [string index $word 0]
+            set value [string range $word 1 end]
+            if {![string is double -strict $value]} {
+                lappend unknown text $word
+                continue
+            }
+            lappend pairs $letter $value
+            if {$letter in {X Y Z}} {
+                if {$machineFrame} {
+                    set S($letter) ""
+                } elseif {$S(cycle) && $letter eq "Z"} {
+                    # in a canned cycle Z is the hole's bottom
+                    set S(bottom) $value
+                } else {
+                    set S($letter) $value
+                }
                 if {$S(cycle)} {set hole 1}
-            } elseif {$letter eq "G"} {
-                my GCode $value
+                lappend moved $letter
+            } elseif {$letter eq "R"} {
+                set S(R) $value
                 if {$S(cycle)} {set hole 1}
             } elseif {[set i [lsearch -exact $S(names) $letter]] >= 0} {
                 set q [::fivax::num::rad $value]
                 lassign [lindex $S(limits) $i] min max
-                if {$q < $min - 1e-9 || $q > $max + 1e-9} {incr S(limitViolations)}
+                if {$q < $min - 1e-9 || $q > $max + 1e-9} {
+                    incr S(limitViolations)
+                    lappend limit $letter
+                }
                 set S(q[expr {$i + 1}]) $q
+                lappend moved $letter
+            } elseif {$letter eq "G"} {
+                set g [expr {$value == round($value) ? int($value) : $value}]
+                switch -exact -- $g {
+                    0 {set S(motion) 0}
+                    1 {set S(motion) 1}
+                    93 {set S(mode) inverse}
+                    94 {set S(mode) direct}
+                    default {
+                        if {$g ni $::fivax::verify::KnownG} {lappend unknown G$g $word}
+                    }
+                }
+            } elseif {$letter eq "F"} {
+                set S(F) $value
+                dict set out F $value
+            } elseif {$letter ni $::fivax::verify::KnownLetters} {
+                lappend unknown "letter $letter" $word
             }
         }
+        dict set out motion $S(motion)
+        dict set out mode $S(mode)
+        dict set out feed $S(F)
+        dict set out moved $moved
+        dict set out words $pairs
+        dict set out limit $limit
+        dict set out unknown $unknown
+        dict set out hole $hole
+        if {$hole} {
+            set z $S(Z)
+            set S(Z) $S(bottom)
+            dict set out joints [my Joints]
+            # back to the initial level (G98) or the R plane (G99)
+            set S(Z) [expr {$S(return) == 99 ? $S(R) : $z}]
+        } else {
+            dict set out joints [my Joints]
+        }
+        return $out
+    }
+
+    # Returns the modal joint vector {X Y Z q1 q2}, or "" while one is unknown.
+    method Joints {} {
+        if {$S(X) eq "" || $S(Y) eq "" || $S(Z) eq "" || $S(q1) eq "" || $S(q2) eq ""} {
+            return ""
+        }
+        list $S(X) $S(Y) $S(Z) $S(q1) $S(q2)
+    }
+
+    # Returns {P t}: tool tip and axis (workpiece frame) at joints.
+    method tip {joints} {
+        ::fivax::kin::forward $S(model) $joints
+    }
+
+    # Returns {dp da}: the distance (mm) and angle (deg) of the tool tip and
+    # axis at joints from tip P and unit axis t.
+    method deviation {joints P t} {
+        lassign [::fivax::kin::forward $S(model) $joints] Pm tm
+        list [::fivax::vec::norm [::fivax::vec::sub $Pm $P]] \
+            [::fivax::num::deg [::fivax::vec::angle $tm $t]]
+    }
+
+    # Returns {dp da}: the largest distance (mm) of the tool tip from the
+    # segment P0-P1 and angle (deg) of the axis from the great circle
+    # t0-t1 at the quarter points of the controller's linear joint
+    # interpolation from j0 to j1; a rotary that rolls over turns the
+    # shortest way.
+    method interior {j0 j1 P0 P1 t0 t1} {
+        namespace upvar ::fivax::num pi pi
+        foreach i {3 4} roll $S(rollover) {
+            if {$roll} {
+                set a [lindex $j0 $i]
+                set d [expr {[lindex $j1 $i] - $a}]
+                lset j1 $i [expr {$a + $d - 2.0 * $pi * round($d / (2.0 * $pi))}]
+            }
+        }
+        lassign [::fivax::kin::interpolationError $S(model) $j0 $j1 $P0 $P1 $t0 $t1] dp da
+        list $dp [::fivax::num::deg $da]
+    }
+
+    # Reads the NC line (the post's own block) and, when move (a motion
+    # move record) carries a CL target (P, t), measures the deviation at
+    # the block end and, for cutting moves, inside the block.
+    method block {line move} {
+        set joints [dict get [my read $line] joints]
         set P [dict get $move P]
-        if {$P eq "" || $S(X) eq "" || $S(Y) eq "" || $S(Z) eq "" || $S(q1) eq "" || $S(q2) eq ""} {
+        if {$P eq "" || $joints eq ""} {
             if {$P eq ""} {set S(prev) {}}
-            my EndHole $hole
             return
         }
         set t [dict get $move t]
-        set joints [list $S(X) $S(Y) [expr {$hole ? $S(bottom) : $S(Z)}] $S(q1) $S(q2)]
-        lassign [::fivax::kin::forward $S(model) $joints] Pm tm
-        set dp [::fivax::vec::norm [::fivax::vec::sub $Pm $P]]
-        set da [::fivax::num::deg [::fivax::vec::angle $tm $t]]
+        lassign [my deviation $joints $P $t] dp da
         incr S(checked)
         if {$dp > $S(maxPos)} {set S(maxPos) $dp; set S(worst) [dict get $move src]}
         if {$da > $S(maxAng)} {set S(maxAng) $da}
         if {[dict get $move kind] eq "feed" && $S(prev) ne ""} {
-            my Segment $S(prev) $joints $P $t [dict get $move src]
+            lassign $S(prev) j0 P0 t0
+            incr S(segments)
+            lassign [my interior $j0 $joints $P0 $P $t0 $t] dp da
+            if {$dp > $S(maxMidPos)} {set S(maxMidPos) $dp; set S(worstMid) [dict get $move src]}
+            if {$da > $S(maxMidAng)} {set S(maxMidAng) $da}
         }
         set S(prev) [list $joints $P $t]
-        my EndHole $hole
-    }
-
-    # Follows the canned-cycle state of G code g: G73, G76, G81..G89 start
-    # a cycle (the Z before it is the initial level), G98 / G99 choose the
-    # return to the initial level or the R plane, G80 and G0..G3 end it.
-    method GCode {g} {
-        set g [expr {$g + 0}]
-        if {$g in {73 76 81 82 83 84 85 86 87 88 89}} {
-            if {!$S(cycle)} {
-                set S(initial) $S(Z)
-                set S(bottom) $S(Z)
-            }
-            set S(cycle) 1
-        } elseif {$g in {98 99}} {
-            set S(return) $g
-        } elseif {$g in {80 0 1 2 3}} {
-            set S(cycle) 0
-        }
-    }
-
-    # After a block of a canned cycle that drilled a hole (hole 1): the
-    # tool has gone to Z (the bottom, checked) and back to the initial
-    # level (G98) or the R plane (G99): the modal Z becomes that level.
-    method EndHole {hole} {
-        if {!$hole} return
-        set S(prev) {}
-        if {$S(return) == 99} {
-            set S(Z) $S(R)
-        } else {
-            set S(Z) $S(initial)
-        }
-    }
-
-    # Measures the tip and axis at the quarter points of the linear joint
-    # interpolation from the previous checked block to joints; a rotary
-    # that rolls over turns the shortest way.
-    method Segment {prev joints P t src} {
-        namespace upvar ::fivax::num pi pi
-        lassign $prev j0 P0 t0
-        foreach i {3 4} roll $S(rollover) {
-            if {$roll} {
-                set a [lindex $j0 $i]
-                set d [expr {[lindex $joints $i] - $a}]
-                lset joints $i [expr {$a + $d - 2.0 * $pi * round($d / (2.0 * $pi))}]
-            }
-        }
-        incr S(segments)
-        lassign [::fivax::kin::interpolationError $S(model) $j0 $joints $P0 $P $t0 $t] dp da
-        set da [::fivax::num::deg $da]
-        if {$dp > $S(maxMidPos)} {set S(maxMidPos) $dp; set S(worstMid) $src}
-        if {$da > $S(maxMidAng)} {set S(maxMidAng) $da}
     }
 
     # Returns a dict: checked (CL points), segments, maxPos (mm), maxAng

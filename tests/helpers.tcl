@@ -73,9 +73,63 @@ proc corpusFile {name} {
 
 # runReplay --
 #	Runs tools/replay.tcl with args; returns {code output} (output:
-#	standard output and error together).
+#	standard output and error together). Every NC file a successful run
+#	writes (-o) is then checked by tools/verify.tcl against the CL file
+#	with the same machine, frame and tolerances (verifyReplayOutput): when
+#	that check fails, the code is 2 and verify's report ends the output,
+#	so that the test fails showing it.
 proc runReplay {args} {
     set code [catch {exec [info nameofexecutable] [file join $::fivaxRoot tools replay.tcl] \
         {*}$args 2>@1} out]
+    set out [regsub {\n?child process exited abnormally$} $out ""]
+    if {!$code} {
+        lassign [verifyReplayOutput $args] vcode vout
+        if {$vcode} {
+            set code 2
+            append out "\ntools/verify.tcl on the written file failed:\n$vout"
+        }
+    }
+    list $code $out
+}
+
+# verifyReplayOutput --
+#	Runs tools/verify.tcl on the NC file a replay with command line args
+#	wrote (-o), against its CL file (the last word), with the replay's
+#	-machine, -msys, -table-offset, -controller and -arc-tol; inside
+#	blocks with the replay's -tol and -atol plus 0.001 of output rounding
+#	(-tol 0: not linearised, -atol 0: axis not linearised; not checked). Returns {code output}; {0 {}}
+#	when nothing was written.
+proc verifyReplayOutput {argList} {
+    set opts [dict create -machine [file join $::fivaxRoot machines hh-tilt45.tcl]]
+    set switches {-msys -quiet -help}
+    set cl [lindex $argList end]
+    for {set i 0} {$i < [llength $argList] - 1} {incr i} {
+        set w [lindex $argList $i]
+        if {$w in $switches} {
+            dict set opts $w 1
+        } else {
+            dict set opts $w [lindex $argList [incr i]]
+        }
+    }
+    if {![dict exists $opts -o] || ![file isfile [dict get $opts -o]] || $cl eq "-"} {
+        return {0 {}}
+    }
+    set vargs [list -quiet -machine [dict get $opts -machine] -cl $cl]
+    if {[dict exists $opts -msys]} {lappend vargs -msys}
+    foreach key {-table-offset -controller -arc-tol} {
+        if {[dict exists $opts $key]} {lappend vargs $key [dict get $opts $key]}
+    }
+    # inside blocks: the replay's tolerances (0: not linearised) plus
+    # the output rounding of the block ends (as e2eSpec: 0.001 mm)
+    set tol [expr {[dict exists $opts -tol] ? [dict get $opts -tol] : 0.01}]
+    set atol [expr {[dict exists $opts -atol] ? [dict get $opts -atol] : 0.05}]
+    if {$tol == 0} {
+        # no linearisation at all
+        lappend vargs -mid-tol 1e9 -mid-atol 1e9
+    } else {
+        lappend vargs -mid-tol [expr {$tol + 0.001}] -mid-atol [expr {$atol == 0 ? 1e9 : $atol + 0.001}]
+    }
+    set code [catch {exec [info nameofexecutable] [file join $::fivaxRoot tools verify.tcl] \
+        {*}$vargs [dict get $opts -o] 2>@1} out]
     list $code [regsub {\n?child process exited abnormally$} $out ""]
 }
