@@ -68,8 +68,9 @@ namespace eval ::fivax::verify {
         86 87 88 89 90 93 94 98 99}
     # Canned cycles.
     variable CycleG {73 76 81 82 83 84 85 86 87 88 89}
-    # Letters understood besides X Y Z and the rotaries.
-    variable KnownLetters {N G F S T M H O P Q R}
+    # Letters understood besides X Y Z and the rotaries (and R, Q in a
+    # canned cycle).
+    variable KnownLetters {N G F S T M H O P}
 }
 
 # ::fivax::verify::create --
@@ -212,9 +213,11 @@ oo::class create ::fivax::verify::Checker {
                 }
                 if {$S(cycle)} {set hole 1}
                 lappend moved $letter
-            } elseif {$letter eq "R"} {
+            } elseif {$letter eq "R" && $S(cycle)} {
                 set S(R) $value
-                if {$S(cycle)} {set hole 1}
+                set hole 1
+            } elseif {$letter eq "Q" && $S(cycle)} {
+                # the peck depth: the hole ends at its bottom all the same
             } elseif {[set i [lsearch -exact $S(names) $letter]] >= 0} {
                 set q [::fivax::num::rad $value]
                 lassign [lindex $S(limits) $i] min max

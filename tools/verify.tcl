@@ -92,7 +92,7 @@ proc ::verifytool::Run {opts path machine} {
         -controller [dict get $opts -controller]]
     if {[dict get $opts -cl] ne ""} {
         set S(cl) [::fivax::clpath read [dict get $opts -cl] [dict get $opts -msys] \
-            [dict get $opts -arc-tol]]
+            [dict get $opts -arc-tol] [dict get $machine units]]
     }
     $S(checker) setTool [dict get $opts -tool-length]
     set lineNo 0
@@ -144,6 +144,16 @@ proc ::verifytool::Line {line where n} {
     set motion [dict get $blk motion]
     if {$motion == 0 && $S(prevMotion) == 1} {dict incr S(op) retracts}
     set figures {{} {} {} {}}
+    if {[dict get $blk hole]} {
+        # a canned cycle's hole, checked at its bottom; its motions are
+        # the controller's, and the tool ends on the return level
+        set S(prev) {}
+        set figures [Cutting $blk $joints $P $t $where Bottom]
+        set S(prevMotion) 0
+        lappend S(rows) [list $n [dict get $S(op) name] 1 $joints $P $t {*}$figures \
+            [dict get $blk F] [dict get $blk mode]]
+        return
+    }
     if {$motion == 1} {set figures [Cutting $blk $joints $P $t $where]}
     lappend S(rows) [list $n [dict get $S(op) name] $motion $joints $P $t {*}$figures \
         [dict get $blk F] [dict get $blk mode]]
@@ -190,9 +200,10 @@ proc ::verifytool::Travel {joints} {
 
 # ::verifytool::Cutting --
 #	Checks a cutting block (G1) ending at joints, tip P, axis t: its feed,
-#	the inside of the move, and the end against the CL path. Returns
+#	the inside of the move, and the end against the CL path (by match:
+#	Match, or Bottom for a hole). Returns
 #	{endPos endAng midPos midAng} ("" where not measured).
-proc ::verifytool::Cutting {blk joints P t where} {
+proc ::verifytool::Cutting {blk joints P t where {match Match}} {
     variable S
     dict incr S(op) feeds
     set issue [FeedIssue $blk]
@@ -210,7 +221,7 @@ proc ::verifytool::Cutting {blk joints P t where} {
         lset out 3 $midAng
     }
     if {[llength $S(clPoints)]} {
-        lassign [Match $P $t] endPos endAng
+        lassign [$match $P $t] endPos endAng
         Max S(op) endPos $endPos $where
         Max S(op) endAng $endAng $where
         lset out 0 $endPos
@@ -257,6 +268,29 @@ proc ::verifytool::Match {P t} {
     }
     set S(cursor) $i
     list $d [::fivax::num::deg [::fivax::vec::angle $t $tq]]
+}
+
+# ::verifytool::Bottom --
+#	Returns {d a} as Match does for the bottom P, t of a canned cycle's
+#	hole, measured to the nearest hole bottom of the CL path (a point
+#	reached by feed), never to a point between: a hole too short or too
+#	deep fails.
+proc ::verifytool::Bottom {P t} {
+    variable S
+    set n [llength $S(clPoints)]
+    set best {Inf 0}
+    foreach from [list $S(cursor) 0] to [list [expr {$S(cursor) + [dict get $S(opts) -window]}] $n] {
+        for {set i $from} {$i < min($to, $n)} {incr i} {
+            lassign [lindex $S(clPoints) $i] Q tq src rapid
+            if {$rapid} continue
+            set d [::fivax::vec::norm [::fivax::vec::sub $P $Q]]
+            if {$d < [lindex $best 0]} {set best [list $d $i]}
+        }
+        if {[lindex $best 0] <= [dict get $S(opts) -tol]} break
+    }
+    lassign $best d i
+    set S(cursor) $i
+    list $d [::fivax::num::deg [::fivax::vec::angle $t [lindex $S(clPoints) $i 1]]]
 }
 
 # ::verifytool::NoRows --

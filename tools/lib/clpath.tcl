@@ -1,100 +1,45 @@
 # clpath.tcl --
 #	The CL path of a CLSF file as the tools compare against it: per
 #	operation (TOOL PATH ... END-OF-PATH) the tool length of its TLDATA and
-#	the polyline of its GOTO points with their tool axes (arcs written as
-#	points within the post's chord tolerance, as the post does), and the
-#	nearest point of that polyline to a given tip. Reads the file with
-#	fivax::clsf (the text is data). Needs the fivax package.
+#	the polyline of its points with their tool axes as NX's events give
+#	them to a post (arcs and NURBS as points within the post's chord
+#	tolerance, as the post does; holes as their motions), and the nearest
+#	point of that polyline to a given tip. Reads the file with the replay's
+#	MOM runtime (the text is data). Needs the fivax package.
 #
 #	A point is {P t src rapid}: tip, unit axis (workpiece frame), FILE:LINE,
 #	1 when it was reached by a RAPID.
 
 namespace eval ::fivax::clpath {
+    variable postFile [file join [file dirname [file normalize [info script]]] clpath-post.tcl]
     namespace export read nearest
     namespace ensemble create -prefixes 0
 }
 
 # ::fivax::clpath::read --
 #	Returns the operations of the CL file at path: a list of dicts
-#	{name NAME length L points {...}}; with msys 1 the points are mapped
-#	through the file's MSYS frame (as replay -msys does). arcTol is the
-#	chord tolerance of arcs. Errors: those of fivax::clsf.
-proc ::fivax::clpath::read {path {msys 0} {arcTol 0.002}} {
-    set reader [::fivax::clsf::open $path]
-    set ops {}
-    set op {}
-    set length ""
-    set frame {}
-    set axis {0.0 0.0 1.0}
-    set rapid 0
-    set circle {}
-    set last {}
+#	{name NAME length L points {...}} (L "" when no TLDATA gave one),
+#	read by the replay's MOM runtime with the handlers of
+#	clpath-post.tcl: lengths in unit (mm or inch, as the machine's),
+#	arcs and NURBS as points within arcTol, cycle holes as R plane,
+#	bottom and retract points; with msys 1 the points are mapped through
+#	the file's MSYS frame (as replay -msys does).
+#	Errors: those of fivax::clsf and fivax::mom.
+proc ::fivax::clpath::read {path {msys 0} {arcTol 0.002} {unit mm}} {
+    variable postFile
+    set rt [::fivax::mom::create -post $postFile -listing ::fivax::clpath::Ignore \
+        -autopath $::auto_path -globals [list clpath_msys $msys clpath_tol $arcTol \
+        mom_kin_output_unit [expr {$unit eq "inch" ? "IN" : "MM"}]]]
     try {
-        while {[set rec [$reader next]] ne ""} {
-            set src "[dict get $rec file]:[dict get $rec line]"
-            switch -exact -- [dict get $rec kind] {
-                TOOLPATH {
-                    if {$op ne ""} {lappend ops $op}
-                    set op [dict create name [dict get $rec name] length $length points {}]
-                }
-                TLDATA {
-                    if {[dict exists $rec length]} {
-                        set length [dict get $rec length]
-                        if {$op ne ""} {dict set op length $length}
-                    }
-                }
-                MSYS {
-                    if {$msys} {
-                        set x [dict get $rec xaxis]
-                        set y [dict get $rec yaxis]
-                        set frame [list [dict get $rec origin] $x $y [::fivax::vec::cross $x $y]]
-                    }
-                }
-                RAPID {set rapid 1}
-                CIRCLE {set circle $rec}
-                GOTO - FROM - GOHOME {
-                    if {$op eq ""} {set op [dict create name "" length $length points {}]}
-                    if {[dict get $rec axis] ne ""} {set axis [dict get $rec axis]}
-                    set P [dict get $rec point]
-                    set pts [list $P]
-                    if {$circle ne "" && $last ne "" && !$rapid} {
-                        set sense [expr {[llength [dict get $circle numbers]] >= 11 ? -1 : 1}]
-                        set pts [::fivax::curve::arc [lindex $last 0] $P \
-                            [dict get $circle center] [dict get $circle axis] $sense \
-                            [dict get $circle times] $arcTol]
-                    }
-                    foreach p $pts {
-                        set pt [list [Map $frame $p 1] [Map $frame $axis 0] $src $rapid]
-                        dict lappend op points $pt
-                    }
-                    set last [list $P]
-                    set rapid 0
-                    set circle {}
-                }
-                END_OF_PATH {
-                    if {$op ne ""} {lappend ops $op}
-                    set op {}
-                }
-            }
-        }
+        $rt run $path
+        [$rt interp] eval {set ::clpath_ops}
     } finally {
-        $reader destroy
+        $rt destroy
     }
-    if {$op ne ""} {lappend ops $op}
-    return $ops
 }
 
-# ::fivax::clpath::Map --
-#	Returns v mapped through frame {o x y z} (a point when isPoint, else
-#	a direction); v itself without a frame.
-proc ::fivax::clpath::Map {frame v isPoint} {
-    if {$frame eq ""} {return $v}
-    lassign $frame o x y z
-    lassign $v a b c
-    set w [::fivax::vec::add [::fivax::vec::add [::fivax::vec::scale $a $x] \
-        [::fivax::vec::scale $b $y]] [::fivax::vec::scale $c $z]]
-    expr {$isPoint ? [::fivax::vec::add $o $w] : $w}
-}
+# ::fivax::clpath::Ignore -- Drops a listing line (the replay reports the CL's warnings).
+proc ::fivax::clpath::Ignore {line} {}
 
 # ::fivax::clpath::nearest --
 #	Returns {d i s Q tq} for tip P with axis t: the distance d from P to
