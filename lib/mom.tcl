@@ -504,10 +504,11 @@ oo::class create ::fivax::mom::Runtime {
         set S(firstMove) 1
         set S(toolChanged) 0
         set child $S(interp)
-        if {![info exists S(toolNumbered)]} {
+        # no TOOL PATH nor LOAD yet (an implicit operation): no tool to change to
+        set toolKnown [expr {$S(toolKey) ne ""}]
+        if {$toolKnown && ![info exists S(toolNumbered)]} {
             # No LOAD/TOOL: number tools by first appearance of their names.
             set key $S(toolKey)
-            if {$key eq ""} {set key {name DEFAULT}}
             set idx [lsearch -exact $S(toolNames) $key]
             if {$idx < 0} {lappend S(toolNames) $key; set idx [expr {[llength $S(toolNames)] - 1}]}
             set n [expr {$idx + 1}]
@@ -515,7 +516,7 @@ oo::class create ::fivax::mom::Runtime {
                 mom_tool_length_adjust_register $n]
         }
         foreach {var default} {mom_tool_length 0.0 mom_tool_diameter 0.0
-            mom_tool_corner1_radius 0.0 mom_tool_name "" mom_tool_number 1} {
+            mom_tool_corner1_radius 0.0 mom_tool_name ""} {
             if {![$child eval [list info exists ::$var]]} {
                 my Globals [list $var $default]
             }
@@ -525,7 +526,7 @@ oo::class create ::fivax::mom::Runtime {
             set S(msysPending) 0
             my Fire msys
         }
-        my ToolChange
+        if {$toolKnown} {my ToolChange}
         set udes $S(udes)
         set S(udes) {}
         foreach event $udes {my Fire $event}
@@ -533,7 +534,8 @@ oo::class create ::fivax::mom::Runtime {
 
     # ToolChange --
     #	Fires MOM_first_tool for the program's first tool, MOM_tool_change when
-    #	the tool differs from the last one, nothing otherwise.
+    #	the tool differs from the last one, nothing otherwise (tools come
+    #	from the CL only: TOOL PATH, LOAD, LOADTL).
     method ToolChange {} {
         set key [list [$S(interp) eval {set ::mom_tool_number}] $S(toolKey)]
         if {$key eq $S(prevToolKey)} return

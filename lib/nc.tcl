@@ -32,10 +32,10 @@ namespace eval ::fivax::nc {
         {-sequence bool 1 "" "write N sequence numbers"}
         {-seq-start {int min 0} 10 N "first sequence number"}
         {-seq-incr {int min 1} 10 N "sequence number step"}
-        {-seq-max {int min 1} 99999 N "largest sequence number"}
+        {-seq-max {int min 1} 99999 N "largest sequence number: numbering stops after it, with a warning"}
         {-separator text " " TEXT "text between words"}
         {-eol any "" TEXT "text at the end of every block"}
-        {-warn any "" CMD "command prefix called with the message of a MIN/MAX Warning"}
+        {-warn any "" CMD "command prefix called with the message of a MIN/MAX Warning, or when numbering stops"}
     }
 }
 
@@ -226,14 +226,12 @@ oo::class create ::fivax::nc::Writer {
         }
         if {[llength $once]} {my ConsumeOnce $once}
         if {![llength $out]} {return ""}
-        if {$seqOn} {return [my SeqWord]$sep[join $out $sep]$eol}
-        return [join $out $sep]$eol
+        my Numbered [join $out $sep]
     }
 
     # Returns text as one block, prefixed with N<seq> when numbering is on.
     method line {text} {
-        if {$seqOn} {return [my SeqWord]$sep$text$eol}
-        return $text$eol
+        my Numbered $text
     }
 
     # Forces the named addresses out (once, always) whatever their
@@ -332,15 +330,29 @@ oo::class create ::fivax::nc::Writer {
         }
     }
 
-    # Returns the N word for the current number and advances it (wraps
-    # past -seq-max to -seq-start).
-    method SeqWord {} {
+    # Returns text as a block: N<seq> first while numbering is on and the
+    # number within -seq-max (then the number advances); past -seq-max
+    # numbering stops with one warning: never a repeated N.
+    method Numbered {text} {
+        if {!$seqOn} {return $text$eol}
         set n $seqNext
-        set next [expr {$n + [dict get $cfg -seq-incr]}]
-        set seqNext [expr {$next > [dict get $cfg -seq-max] ? [dict get $cfg -seq-start] : $next}]
+        if {$n > [dict get $cfg -seq-max]} {
+            set seqOn 0
+            set warn [dict get $cfg -warn]
+            if {[llength $warn]} {
+                {*}$warn "sequence numbers past [dict get $cfg -seq-max] (the largest the\
+                    .def's SEQUENCE allows): the rest of the program is not numbered"
+            }
+            return $text$eol
+        }
+        set seqNext [expr {$n + [dict get $cfg -seq-incr]}]
         lassign $Addr(N) mode kind spec leader trailer
-        if {$kind eq "d"} {return $leader[::format $spec $n]$trailer}
-        return $leader[::fivax::nc::FormatValue $kind $spec $n]$trailer
+        if {$kind eq "d"} {
+            set word $leader[::format $spec $n]$trailer
+        } else {
+            set word $leader[::fivax::nc::FormatValue $kind $spec $n]$trailer
+        }
+        return $word$sep$text$eol
     }
 
     # Clears the once requests of the addresses used by a block.

@@ -34,11 +34,13 @@ namespace eval ::fivax::output {
         {-seq-start {maybe int min 0} {} N "first sequence number (default: the .def's)"}
         {-seq-incr {maybe int min 1} {} N "sequence number step (default: the .def's)"}
         {-program {int min 0} 1000 N "program number"}
-        {-warn any {} CMD "command prefix called with each warning (a MIN/MAX Warning of the .def)"}
+        {-insert {enum checked verbatim} checked MODE
+            "INSERT text: written when it reads as NC words of the dialect, else as a comment with a warning (checked), or as it is (verbatim)"}
+        {-warn any {} CMD "command prefix called with each warning (a MIN/MAX Warning of the .def, INSERT text not written)"}
     }
     # The addresses this layer writes: every one must be in the .def.
     variable Addresses {G_motion G_feed G_plane G_mode G_units G_length G_cycle
-        G_return G_dwell X Y Z R Q P_ms P_s fourth_axis fifth_axis F F_inv S T H
+        G_cutcom G_wcs G_machine G_return G_dwell X Y Z R Q P_ms P_s fourth_axis fifth_axis F F_inv S T H
         M_spindle M_coolant M N}
 
     # Per dialect:
@@ -49,6 +51,8 @@ namespace eval ::fivax::output {
     #              (milliseconds) or P_s (seconds)
     #   cycles     canned cycle G codes by NX cycle event; a cycle the
     #              control lacks is expanded into moves by the planner
+    #   letters    word letters an INSERT may use besides the machine's
+    #              axes (N and O are the post's)
     variable Dialects {
         fanuc {
             program O%04d
@@ -56,14 +60,16 @@ namespace eval ::fivax::output {
             dwell P_ms
             cycles {drill 81 drill_dwell 82 drill_deep 83 drill_break_chip 73 tap 84
                 bore 85 bore_drag 86 bore_no_drag 76 bore_back 87 bore_manual 88 bore_dwell 89}
+            letters {G M F S T H D P Q R I J K L}
         }
         linuxcnc {
             program {}
             active {MSG DEBUG PRINT LOG LOGOPEN LOGAPPEND LOGCLOSE PROBEOPEN PROBECLOSE
                 ABORT PY PYRUN PYRELOAD}
             dwell P_s
-            cycles {drill 81 drill_dwell 82 drill_deep 83 drill_break_chip 73
+            cycles {drill 81 drill_dwell 82 drill_deep 83 drill_break_chip 73 tap 84
                 bore 85 bore_drag 86 bore_back 87 bore_manual 88 bore_dwell 89}
+            letters {G M F S T H D P Q R I J K L}
         }
     }
 }
@@ -181,7 +187,9 @@ oo::class create ::fivax::output::Writer {
     }
 
     # Returns the program-start lines: the dialect's program header
-    # carrying comment, then units, absolute mode, feed mode and plane.
+    # carrying comment, the safety line (no cutter, length or cycle
+    # compensation active), units, absolute mode, feed mode and plane,
+    # then the machine's work offset.
     method start {comment} {
         set lines [list %]
         set program [dict get $dialect program]
@@ -195,8 +203,10 @@ oo::class create ::fivax::output::Writer {
             if {$text eq ""} {set text "PROGRAM $number"}
             lappend lines ($text)
         }
-        lappend lines [$nc block [list G_units \
-            [expr {[dict get $machine units] eq "inch" ? 20 : 21}] G_mode 90 G_feed 94 G_plane 17]]
+        lappend lines [$nc block {G_cutcom 40 G_length 49 G_cycle 80}] \
+            [$nc block [list G_units [expr {[dict get $machine units] eq "inch" ? 20 : 21}] \
+                G_mode 90 G_feed 94 G_plane 17]] \
+            [$nc block [list G_wcs [dict get $machine work_offset]]]
     }
 
     # Returns text as a comment line in the dialect's style, never numbered.
@@ -204,14 +214,29 @@ oo::class create ::fivax::output::Writer {
         return ([my Sanitise $text])
     }
 
-    # Returns the tool change block for tool number, and arms the length
+    # Returns the tool change blocks for tool number: Z up to the
+    # tool-change height (see safeZ), then T M6; arms the length
     # compensation register adjust (0: none) for the next Z move. Modal
     # memory is reset: everything is written again after a tool change.
     method toolChange {number adjust} {
-        set lines [my CycleOff]
+        set lines [my safeZ]
         lappend lines [$nc block [list T $number M 6]]
         $nc reset
         set length $adjust
+        return $lines
+    }
+
+    # Returns the blocks that take the spindle up to the machine's
+    # tool-change height with length compensation cancelled (G0 G49 G53
+    # Z<tool_change_z>: machine coordinates), ending an active cycle
+    # first. The written Z is forgotten: the next Z is in the work frame.
+    method safeZ {} {
+        set lines [my CycleOff]
+        set length 0
+        $nc force once {G_motion Z}
+        lappend lines [$nc block [list G_motion 0 G_length 49 G_machine 53 \
+            Z [dict get $machine tool_change_z]]]
+        $nc reset Z
         return $lines
     }
 
@@ -307,9 +332,39 @@ oo::class create ::fivax::output::Writer {
         lappend lines [$nc block $words]
     }
 
-    # Returns text as an NC line as it is.
+    # Returns INSERT text as an NC line when it reads as NC words of the
+    # dialect (see NotWords) or -insert is verbatim; else as a comment,
+    # with a warning.
     method literal {text} {
-        list $text
+        if {[dict get $cfg -insert] eq "verbatim"} {return [list $text]}
+        set why [my NotWords $text]
+        if {$why eq ""} {return [list $text]}
+        set warn [dict get $cfg -warn]
+        if {[llength $warn]} {
+            {*}$warn "INSERT text written as a comment: $why (-insert verbatim writes it as it is)"
+        }
+        list [my comment $text]
+    }
+
+    # Returns what keeps text from being a line of NC words ("" when it
+    # is one): after its ( ) comments, whitespace-separated words of an
+    # upper-case letter and a number, the letter one of the machine's
+    # axes or the dialect's letters.
+    method NotWords {text} {
+        set letters [concat {X Y Z} [lmap r $rotaries {lindex $r 0}] [dict get $dialect letters]]
+        set words [regsub -all {\([^()]*\)} $text " "]
+        if {[string first ( $words] >= 0 || [string first ) $words] >= 0} {
+            return "unbalanced parentheses"
+        }
+        foreach word [regexp -all -inline {\S+} $words] {
+            if {![regexp {^([A-Z])[-+]?(\d+\.?\d*|\.\d+)$} $word -> letter]} {
+                return "'$word' is no NC word"
+            }
+            if {$letter ni $letters} {
+                return "the letter $letter is not one of [join $letters {, }]"
+            }
+        }
+        return ""
     }
 
     # Returns the block of the move record rec (see ::fivax::motion
@@ -359,9 +414,20 @@ oo::class create ::fivax::output::Writer {
         lappend lines [$nc block $words]
     }
 
-    # Returns the program-end lines: spindle and coolant off, M30, %.
+    # Returns the program-end lines: Z up to the tool-change height, the
+    # rotaries to 0 when the machine's home_rotaries is 1, spindle and
+    # coolant off, M30, %.
     method end {} {
-        concat [my CycleOff] [list [$nc block {M_spindle 5 M_coolant 9}] [$nc line M30] %]
+        set lines [my safeZ]
+        if {[dict get $machine home_rotaries]} {
+            set words {G_motion 0}
+            foreach r $rotaries addr {fourth_axis fifth_axis} {
+                lappend words $addr 0.0
+            }
+            $nc force once {fourth_axis fifth_axis}
+            lappend lines [$nc block $words]
+        }
+        concat $lines [list [$nc block {M_spindle 5 M_coolant 9}] [$nc line M30] %]
     }
 
     # Returns text made safe for the inside of a ( ) comment: parentheses

@@ -165,7 +165,8 @@ proc MOM_start_of_program {} {fivax_guard {
     if {[info exists mom_definition_file_name] && $mom_definition_file_name ne ""} {
         set defFile $mom_definition_file_name
     }
-    set options [list -def [fivax::def load $defFile] -warn fivax_warn]
+    set options [list -def [fivax::def load $defFile] -warn fivax_warn \
+        -insert [dict get $fivax(settings) -insert]]
     if {[dict get $fivax(settings) -controller] ne ""} {
         lappend options -controller [dict get $fivax(settings) -controller]
     }
@@ -173,7 +174,9 @@ proc MOM_start_of_program {} {fivax_guard {
     set fivax(plan) [fivax::motion create $machine -angle-step [$fivax(out) angleStep] \
         {*}[fivax::settings pick $fivax(settings) motion]]
     set fivax(verify) [fivax::verify create $machine {*}[fivax::settings pick $fivax(settings) verify]]
-    set fivax(toolLength) [dict get $machine tool_length]
+    set fivax(tool) {}
+    set fivax(toolChanges) 0
+    set fivax(positioned) 0
     set fivax(opStart) 0
     set fivax(cycle) {}
     fivax_out [$fivax(out) start "[fivax_program_name] - [dict get $machine name]"]
@@ -198,7 +201,8 @@ proc MOM_first_tool {} {
 }
 
 # The tool number must be a positive integer; a length register of 0 (NX's
-# "not set") means the tool number.
+# "not set") means the tool number. The spindle goes up to the tool-change
+# height first; the next operation approaches from there.
 proc MOM_tool_change {} {fivax_guard {
     global fivax mom_tool_number mom_tool_length mom_tool_length_adjust_register
     if {![info exists mom_tool_number] || ![string is entier -strict $mom_tool_number]
@@ -206,18 +210,23 @@ proc MOM_tool_change {} {fivax_guard {
         error "tool change to tool '[expr {[info exists mom_tool_number] ? $mom_tool_number : ""}]':\
             the tool needs a number of 1 or more (set it in the CAM tool)"
     }
-    fivax_emit [$fivax(plan) flush]
-    set len $fivax(toolLength)
+    set len [dict get $fivax(machine) tool_length]
     if {[info exists mom_tool_length] && $mom_tool_length > 0} {set len $mom_tool_length}
-    $fivax(plan) setTool $len
-    $fivax(verify) setTool $len
     set adjust $mom_tool_number
     if {[info exists mom_tool_length_adjust_register]
             && [string is entier -strict $mom_tool_length_adjust_register]
             && $mom_tool_length_adjust_register > 0} {
         set adjust $mom_tool_length_adjust_register
     }
+    # the tool in the spindle again: no second change
+    if {[list $mom_tool_number $adjust $len] eq $fivax(tool)} return
+    set fivax(tool) [list $mom_tool_number $adjust $len]
+    fivax_emit [$fivax(plan) flush]
+    $fivax(plan) setTool $len
+    $fivax(verify) setTool $len
     fivax_out [$fivax(out) toolChange $mom_tool_number $adjust]
+    set fivax(positioned) 1
+    incr fivax(toolChanges)
 }}
 
 # Spindle and coolant: the handlers only mark the state when an operation
@@ -275,6 +284,12 @@ proc MOM_first_move {} {fivax_guard fivax_first_move}
 proc fivax_first_move {} {
     global fivax mom_motion_event mom_motion_type mom_programmed_feed_rate
     set fivax(opStart) 0
+    if {!$fivax(positioned)} {
+        # no tool change before: the position is unknown, start from the top
+        fivax_emit [$fivax(plan) flush]
+        fivax_out [$fivax(out) safeZ]
+        set fivax(positioned) 1
+    }
     fivax_spindle
     fivax_coolant
     set event [expr {[info exists mom_motion_event] ? $mom_motion_event : ""}]
@@ -454,9 +469,10 @@ proc MOM_delay {} {fivax_guard {
 
 proc MOM_end_of_program {} {fivax_guard {
     global fivax fivax_summary
-    fivax_emit [$fivax(plan) flush]
+    fivax_emit [$fivax(plan) finish]
     fivax_out [$fivax(out) end]
-    set fivax_summary [dict merge [$fivax(plan) stats] [$fivax(verify) summary]]
+    set fivax_summary [dict merge [$fivax(plan) stats] [$fivax(verify) summary] \
+        [dict create toolChanges $fivax(toolChanges)]]
     MOM_output_to_listing_device "fivax summary: $fivax_summary"
     fivax_close_log
 }}
