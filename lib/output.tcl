@@ -424,7 +424,7 @@ oo::class create ::fivax::output::Writer {
             foreach r $rotaries addr {fourth_axis fifth_axis} {
                 lappend words $addr 0.0
             }
-            $nc force once {fourth_axis fifth_axis}
+            $nc force once {G_motion fourth_axis fifth_axis}
             lappend lines [$nc block $words]
         }
         concat $lines [list [$nc block {M_spindle 5 M_coolant 9}] [$nc line M30] %]

@@ -404,8 +404,9 @@ oo::class create ::fivax::motion::Planner {
     # Returns the azimuths (layer index -> q2) that the approach sets:
     # where a rapid reaches the singular cone (the azimuth free there) and
     # the path then leaves the cone, the rapid and the cone points after it
-    # take the azimuth the path leaves with, so the azimuth turns during the
-    # approach and not with the tool at cutting depth. Only runs that end
+    # take the azimuth the path leaves with (Departure: its limit at the
+    # cone), so the azimuth turns during the approach and not with the tool
+    # at cutting depth. Only runs that end
     # before layer k of the best path (the written prefix) and whose tilt
     # stays within the limits at that azimuth.
     method Departures {path k} {
@@ -418,7 +419,10 @@ oo::class create ::fivax::motion::Planner {
             set e $j
             while {$e < $n && [::fivax::motion::InCone $ctx [lindex $S(buf) $e 2]]} {incr e}
             if {$e >= $n} break
-            set q2 [lindex $S(buf) $e 5 [expr {5 * [lindex $path $e] + 1}]]
+            # the azimuth the path leaves the cone with (as Split sees it)
+            set q2 [::fivax::motion::Quantize $ctx [::fivax::motion::Departure $ctx \
+                [my PathRecord $path [expr {$e - 1}]] [my PathRecord $path $e] \
+                [lindex $S(buf) $e 4]]]
             set ok 1
             for {set i $j} {$i < $e} {incr i} {
                 set q1 [lindex $S(buf) $i 5 [expr {5 * [lindex $path $i]}]]
@@ -430,6 +434,13 @@ oo::class create ::fivax::motion::Planner {
             set j [expr {$e - 1}]
         }
         return $out
+    }
+
+    # Returns the point record (see Split) of held layer i on the path.
+    method PathRecord {path i} {
+        lassign [lindex $S(buf) $i] - P t - - states
+        lassign [lrange $states [expr {5 * [lindex $path $i]}] end] q1 q2 lab
+        list [list 0.0 0.0 0.0 $q1 $q2] $P $t {} $lab
     }
 
     # Recomputes the costs of the held layers from the last written point.
