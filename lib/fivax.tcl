@@ -8,7 +8,7 @@
 #	    mom def            NX's MOM runtime, .def files (replay's host side)
 #	    machine kin        machine files, kinematics
 #	    curve motion/      CL path geometry, the planner
-#	    nc output          blocks, the dialect output layer
+#	    plane nc output    work-plane frames, blocks, the dialect output layer
 #	    verify             checking written blocks
 #	    settings           the option table of a posting job
 
@@ -31,7 +31,7 @@ foreach ::fivax::File {
     machine.tcl kin.tcl
     curve.tcl motion/plan.tcl motion/candidates.tcl motion/moves.tcl
     motion/linearise.tcl motion/feeds.tcl motion/holes.tcl
-    nc.tcl output.tcl
+    plane.tcl nc.tcl output.tcl
     verify.tcl
     settings.tcl
 } {

@@ -167,19 +167,30 @@ proc MOM_start_of_program {} {fivax_guard {
     }
     set options [list -def [fivax::def load $defFile] -warn fivax_warn \
         -insert [dict get $fivax(settings) -insert]]
-    if {[dict get $fivax(settings) -controller] ne ""} {
-        lappend options -controller [dict get $fivax(settings) -controller]
+    foreach key {-controller -tcp} {
+        if {[dict get $fivax(settings) $key] ne ""} {
+            lappend options $key [dict get $fivax(settings) $key]
+        }
     }
     set fivax(out) [fivax::output create $machine {*}$options]
+    set planOptions [fivax::settings pick $fivax(settings) motion]
+    if {![dict get [$fivax(out) capabilities] inverse] && [dict get $planOptions -feed] eq "inverse"} {
+        # no inverse time (Klartext): F is the feed of all axes together,
+        # degrees counted as mm, which keeps the tip feed
+        dict set planOptions -feed dpm
+        fivax_log "note: [dict get [$fivax(out) capabilities] controller] has no inverse-time feed:\
+            moves with rotary motion get the combined feed of all axes (-feed dpm)"
+    }
     set fivax(plan) [fivax::motion create $machine -angle-step [$fivax(out) angleStep] \
-        {*}[fivax::settings pick $fivax(settings) motion]]
+        {*}$planOptions]
     set fivax(verify) [fivax::verify create $machine {*}[fivax::settings pick $fivax(settings) verify]]
     set fivax(tool) {}
     set fivax(toolChanges) 0
     set fivax(positioned) 0
     set fivax(opStart) 0
     set fivax(cycle) {}
-    fivax_out [$fivax(out) start "[fivax_program_name] - [dict get $machine name]"]
+    fivax_out [$fivax(out) start "[fivax_program_name] - [dict get $machine name]" \
+        [fivax_program_name]]
 }}
 
 proc MOM_start_of_path {} {fivax_guard {

@@ -58,9 +58,13 @@ oo::define ::fivax::motion::Planner {
     # Returns a move record (see flush) of the given kind to joints
     # {X Y Z q1 q2}, writing the axes in write (X Y Z, and R for both
     # rotaries); feed is {mode feed rate tip} or {} for rapids.
+    # In TCP mode X Y Z are the tool tip in the workpiece frame.
     method Move {kind joints write P t feed src {tag ""} {note ""}} {
         lassign [lmap axis $S(axes) {dict get $axis name}] n1 n2
         lassign $joints X Y Z q1 q2
+        if {$S(tcp)} {
+            lassign [lindex [::fivax::kin::forward $S(model) $joints] 0] X Y Z
+        }
         set i [lsearch -exact $write R]
         if {$i >= 0} {set write [lreplace $write $i $i $n1 $n2]}
         if {![llength $feed]} {set feed {direct 0 0 0}}

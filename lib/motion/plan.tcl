@@ -70,6 +70,8 @@ namespace eval ::fivax::motion {
         {-weights {reals 2 gt 0} {1 1} "W1 W2" "travel weights of the tilt and azimuth axes"}
         {-window {int min 2 max 100000} 4000 N
             "CL points the optimiser holds at most (about 1.5 kB each)"}
+        {-tcp {maybe bool} {} "0|1"
+            "TCP mode: X Y Z are the tool tip, feeds the tip feed (G94), no linearisation: the control keeps the tip on the path (default: the machine's tcp)"}
         {-angle-step {real min 0} 0 DEG
             "output resolution of the rotary words: rotaries are rounded to it before X Y Z are computed (0: exact)"}
     }
@@ -94,6 +96,13 @@ oo::class create ::fivax::motion::Planner {
         set S(name) [dict get $machine name]
         dict for {opt value} $opts {set S([string range $opt 1 end]) $value}
         if {$S(clearance) eq ""} {set S(clearance) [dict get $machine clearance]}
+        if {$S(tcp) eq ""} {set S(tcp) [dict get $machine tcp]}
+        if {$S(tcp)} {
+            # the control interpolates the tip: no linearisation, tip feed
+            set S(tol) 0.0
+            set S(atol) 0.0
+            set S(feed) direct
+        }
         foreach {key name} {feedMin feed_min feedMax feed_max itMax inverse_time_max
             safeZ safe_z} {
             set S($key) [dict get $machine $name]
