@@ -185,12 +185,13 @@ oo::class create ::fivax::output::Writer {
     # canned cycle (0: none); pendingTool: the Klartext tool whose TOOL
     # CALL waits for its spindle speed; planeOn: a work plane is active;
     # register: the length register of the tool in the spindle; program:
-    # the Klartext program name; arcPlane: the plane of the last arc.
+    # the Klartext program name; arcPlane: the plane of the last arc;
+    # atSafe: nothing has moved since the last Z up in machine coordinates.
     # After G80 Z and the motion code are
     # written again: the tool stands at the initial level, and the motion
     # mode is stated afresh.
     variable nc cfg dialect machine rotaries length tcpArmed tcpOn feedMode cycle \
-        pendingTool planeOn register program arcPlane
+        pendingTool planeOn register program arcPlane atSafe
 
     constructor {aMachine opts} {
         set machine $aMachine
@@ -213,6 +214,7 @@ oo::class create ::fivax::output::Writer {
         set planeOn 0
         set register 0
         set arcPlane 17
+        set atSafe 0
         set program PART
         set nc [::fivax::nc::create -sequence 0 -warn [dict get $cfg -warn]]
         my Define [dict get $cfg -def]
@@ -352,7 +354,10 @@ oo::class create ::fivax::output::Writer {
     # machine coordinates: G0 G49 G53 Z<tool_change_z>, Sinumerik G0 SUPA
     # Z D0, Klartext L Z R0 FMAX M91), ending an active cycle first. The
     # written Z is forgotten: the next Z is in the work frame.
+    # Nothing when nothing has moved since the last one.
     method safeZ {} {
+        if {$atSafe} {return {}}
+        set atSafe 1
         set lines [concat [my CycleOff] [my TcpOff]]
         set z [dict get $machine tool_change_z]
         switch -exact -- [dict get $dialect machineZ] {
@@ -489,6 +494,7 @@ oo::class create ::fivax::output::Writer {
     # the bottom, R, Q (peck) or P (dwell), F; the next ones of the same
     # cycle with what changed.
     method Cycle {rec} {
+        set atSafe 0
         set axes [dict get $rec axes]
         set event [dict get $rec event]
         # a deep or chip-breaking drill without a peck depth drills in one go
@@ -577,9 +583,15 @@ oo::class create ::fivax::output::Writer {
             plane {return [my PlaneOn $rec]}
             planeOff {return [my PlaneOff]}
         }
+        set write [dict get $rec write]
+        if {![llength $write]} {
+            # a positioning move that moves no axis here (a work plane's
+            # rotaries are the control's)
+            return {}
+        }
+        set atSafe 0
         set lines [my CycleOff]
         set isFeed [expr {[dict get $rec kind] eq "feed"}]
-        set write [dict get $rec write]
         set axes [dict get $rec axes]
         lappend lines {*}[my TcpOn $write]
         if {[dict get $dialect syntax] eq "klartext"} {
@@ -692,6 +704,7 @@ oo::class create ::fivax::output::Writer {
     # the plane's normal, feed): G17..G19 G2/G3 with the end and the
     # centre from the start as I J K; Klartext CC and C DR-/DR+.
     method Arc {rec} {
+        set atSafe 0
         set lines [concat [my CycleOff] [my ToolCall]]
         set plane [dict get $rec plane]
         lassign [dict get $rec start] sx sy sz
@@ -738,7 +751,7 @@ oo::class create ::fivax::output::Writer {
         set angles [::fivax::plane::angles [dict get $::fivax::output::PlaneAngles $form] \
             [dict get $rec matrix]]
         lassign [dict get $rec origin] ox oy oz
-        set lines [my safeZ]
+        set lines [concat [my safeZ] [my ToolCall]]
         switch -exact -- $form {
             g68.2 {
                 lassign $angles i j k

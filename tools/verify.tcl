@@ -259,6 +259,9 @@ proc ::verifytool::ArcInside {arc words} {
         lassign [$S(checker) poseAt $q] P t
         lassign [::fivax::clpath nearest $S(clPoints) $P $t $S(cursor) \
             [dict get $S(opts) -window]] d - - - tq
+        if {$d > [dict get $S(opts) -tol]} {
+            lassign [::fivax::clpath nearest $S(clPoints) $P $t $S(cursor) -1] d - - - tq
+        }
         set a [::fivax::num::deg [::fivax::vec::angle $t $tq]]
         set worst [list [expr {max([lindex $worst 0], $d)}] [expr {max([lindex $worst 1], $a)}]]
     }
