@@ -67,7 +67,9 @@ namespace eval ::fivax::output {
     #   inverse    1: inverse-time feed (G93) exists
     #   tcp        {on LINES off LINES} of TCP mode: G43.4 (Fanuc: on the
     #              first X Y Z block after a tool change, with H), else the
-    #              lines written before that block; {} when the control has
+    #              lines written before that block; off: the lines before
+    #              the Z up (Fanuc's G49 alone: the Z up then carries no
+    #              G49 of its own); {} when the control has
     #              none of its own (LinuxCNC: the machine's tcp_codes)
     #   plane      tilted work plane: g68.2, cycle800, spatial, or {} (none:
     #              the planner writes the rotaries and machine coordinates)
@@ -86,7 +88,7 @@ namespace eval ::fivax::output {
             syntax gcode program O%04d percent 1 comment paren
             safety {G_cutcom 40 G_length 49 G_cycle 80} units {21 20}
             length G43 machineZ G53 inverse 1
-            tcp {on G43.4 off {}} plane g68.2 arcs {planes {17 18 19} helix 1}
+            tcp {on G43.4 off G49} plane g68.2 arcs {planes {17 18 19} helix 1}
             dwell P_ms
             cycles {drill 81 drill_dwell 82 drill_deep 83 drill_break_chip 73 tap 84
                 bore 85 bore_drag 86 bore_no_drag 76 bore_back 87 bore_manual 88 bore_dwell 89}
@@ -358,13 +360,16 @@ oo::class create ::fivax::output::Writer {
     method safeZ {} {
         if {$atSafe} {return {}}
         set atSafe 1
-        set lines [concat [my CycleOff] [my TcpOff]]
+        set off [my TcpOff]
+        set lines [concat [my CycleOff] $off]
         set z [dict get $machine tool_change_z]
         switch -exact -- [dict get $dialect machineZ] {
             G53 {
                 set length 0
                 $nc force once {G_motion Z}
-                lappend lines [$nc block [list G_motion 0 G_length 49 G_machine 53 Z $z]]
+                # (Fanuc's TCP off is G49 in a block of its own)
+                set g49 [expr {[llength $off] && [dict get $dialect tcp] ne "" ? {} : {G_length 49}}]
+                lappend lines [$nc block [list G_motion 0 {*}$g49 G_machine 53 Z $z]]
             }
             SUPA {
                 $nc force once {G_motion Z}
@@ -688,7 +693,10 @@ oo::class create ::fivax::output::Writer {
     method KlartextM {words} {
         set text [my Quiet $words]
         if {$text eq ""} {return {}}
-        list [$nc line "L $text"]
+        # (the tool comes first: M8 before its TOOL CALL would run the
+        # coolant through the tool change)
+        set lines [my ToolCall]
+        lappend lines [$nc line "L $text"]
     }
 
     # Returns the waiting Klartext TOOL CALL (without a speed), or nothing.
@@ -716,8 +724,9 @@ oo::class create ::fivax::output::Writer {
             set feedMode feed
             $nc force once {KX KY}
             set xy [my Quiet [list KX [dict get $rec axes X] KY [dict get $rec axes Y]]]
-            lappend lines [$nc line "C $xy DR[expr {$dir == 2 ? "-" : "+"}] R0\
-                [my Quiet [list KF [dict get $rec rate]]]"]
+            set words [list C $xy DR[expr {$dir == 2 ? "-" : "+"}] R0 \
+                [my Quiet [list KF [dict get $rec rate]]]]
+            lappend lines [$nc line [join [lsearch -all -inline -not -exact $words ""]]]
             return $lines
         }
         set offsets [dict get {17 {I J} 18 {I K} 19 {J K}} $plane]

@@ -123,13 +123,17 @@ proc ReplayOptions {argList} {
 #	Reads the NC file path (for the machine file and controller, "": the
 #	machine's) and returns what breaks the safe program structure, one
 #	"LINE: what" each (at most 20), by the text alone:
-#	- the safety line (G40 G49 G80) and a work offset (G54..G59) before
-#	  the first motion; no sequence number twice; no text that is not
-#	  NC words or a comment;
-#	- every tool change (M6) right after a block taking Z up in machine
-#	  coordinates (G53 Z), and the program's first motion such a block;
+#	- the safety line (Fanuc, LinuxCNC: G40 G49 G80; Sinumerik: G40) and
+#	  a work offset (G54..G59; Klartext has neither) before the first
+#	  motion; no sequence number twice; no text that is not NC words or
+#	  a comment;
+#	- every tool change (M6, TOOL CALL) right after a block taking Z up
+#	  in machine coordinates (G53 Z, SUPA Z, M91), work-plane and TCP
+#	  cancels aside, and the program's first motion such a block;
 #	- the approach after it: rotaries alone, then X Y alone, then the
-#	  first Z move alone (with G43 after a tool change), before any cut
+#	  first Z move alone (Fanuc, LinuxCNC: with G43 or G43.4 since the
+#	  tool change; Sinumerik's D and Klartext's TOOL CALL compensate the
+#	  length themselves), before any cut
 #	  (whether the first cut is the post's entry down the tool axis or
 #	  the CL's own move the text cannot tell: program.test checks the
 #	  entry by forward kinematics);
@@ -137,8 +141,16 @@ proc ReplayOptions {argList} {
 #	  and the last move of X, Y or Z up in machine coordinates.
 proc programProblems {path machineFile {controller ""}} {
     set machine [fivax::machine load $machineFile]
+    if {$controller eq ""} {set controller [dict get $machine controller]}
     set checker [fivax::verify create $machine -controller $controller]
     set rotaries [fivax::machine rotaryNames $machine]
+    set safety [dict get {fanuc {40 49 80} linuxcnc {40 49 80} sinumerik 40 heidenhain {}} $controller]
+    set gLength [expr {$controller in {fanuc linuxcnc}}]
+    # blocks that may stand between the Z up and the tool change
+    set cancels {G69$|CYCLE800\(\)|PLANE RESET|TRAFOOF|FUNCTION RESET TCPM|^(N\d+ )?G49$}
+    if {[llength [dict get $machine tcp_codes]]} {
+        append cancels "|^(N\\d+ )?M[lindex [dict get $machine tcp_codes] 1]\$"
+    }
     set problems {}
     set seen {}
     set header {}
@@ -154,6 +166,7 @@ proc programProblems {path machineFile {controller ""}} {
     set lastFeed 0
     set afterFeed ""
     set lastMotion ""
+    set lengthOn 0
     set n 0
     try {
         foreach line [split [viewFile $path] \n] {
@@ -177,13 +190,16 @@ proc programProblems {path machineFile {controller ""}} {
             set gs [dict get $codes G]
             set machineZ [expr {53 in $gs}]
             if {!$motions} {lappend header {*}$gs}
-            if {6 in [dict get $codes M]} {
+            if {[regexp $cancels $line]} continue
+            if {43 in $gs || 43.4 in $gs} {set lengthOn 1}
+            if {6 in [dict get $codes M] || [regexp {^\d+ TOOL CALL \d} $line]} {
                 if {!([lindex $prevBlock 0] && [lindex $prevBlock 1])} {
                     lappend problems "$n: tool change not right after Z up in machine coordinates"
                 }
                 set approach 1
                 set stage none
                 set toolChanged 1
+                set lengthOn 0
             }
             # the axes whose value this block changes
             set changed {}
@@ -203,10 +219,11 @@ proc programProblems {path machineFile {controller ""}} {
             set prevBlock [list $machineZ $hasZ]
             if {![llength [dict get $blk moved]]} continue
             if {!$motions} {
-                foreach g {40 49 80} {
+                foreach g $safety {
                     if {$g ni $header} {lappend problems "$n: no G$g before the first motion"}
                 }
-                if {![llength [lmap g $header {if {$g >= 54 && $g <= 59} {set g} else continue}]]} {
+                if {$controller ne "heidenhain"
+                        && ![llength [lmap g $header {if {$g >= 54 && $g <= 59} {set g} else continue}]]} {
                     lappend problems "$n: no work offset (G54..G59) before the first motion"
                 }
                 if {!$machineZ} {lappend problems "$n: the first motion is not Z up in machine coordinates"}
@@ -225,7 +242,9 @@ proc programProblems {path machineFile {controller ""}} {
             if {$approach && !$cut} {
                 if {$z} {
                     if {$xy || $rot} {lappend problems "$n: the approach's first Z move moves more than Z"}
-                    if {$toolChanged && 43 ni $gs} {lappend problems "$n: no G43 on the first Z move after the tool change"}
+                    if {$toolChanged && $gLength && !$lengthOn} {
+                        lappend problems "$n: no G43 or G43.4 from the tool change to the first Z move"
+                    }
                     set approach 0
                     set toolChanged 0
                 } elseif {$rot && $xy} {

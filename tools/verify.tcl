@@ -408,6 +408,12 @@ proc ::verifytool::Where {where} {
     expr {$where eq "" ? "-" : $where}
 }
 
+# ::verifytool::CsvFixed -- Returns v with d decimals, "" for "".
+proc ::verifytool::CsvFixed {v d} {
+    if {$v eq ""} {return ""}
+    ::fivax::num::fixed $v $d
+}
+
 # ::verifytool::Csv -- Writes the rows as CSV to path.
 proc ::verifytool::Csv {path rows names} {
     set out [list [join [list line op motion X Y Z {*}$names x y z i j k \
@@ -417,9 +423,9 @@ proc ::verifytool::Csv {path rows names} {
         lassign $joints X Y Z q1 q2
         set vals [list $line [::fivax::nctool::csvField $op] $motion]
         # (a work plane's rotaries are the control's: no joint values)
-        foreach v [list $X $Y $Z] {lappend vals [expr {$v eq "" ? "" : [::fivax::num::fixed $v 4]}]}
+        foreach v [list $X $Y $Z] {lappend vals [CsvFixed $v 4]}
         foreach q [list $q1 $q2] {
-            lappend vals [expr {$q eq "" ? "" : [::fivax::num::fixed [::fivax::num::deg $q] 4]}]
+            lappend vals [CsvFixed [expr {$q eq "" ? "" : [::fivax::num::deg $q]}] 4]
         }
         foreach v [concat $P] {lappend vals [::fivax::num::fixed $v 6]}
         foreach v $t {lappend vals [::fivax::num::fixed $v 7]}

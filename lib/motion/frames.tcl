@@ -53,17 +53,18 @@ oo::define ::fivax::motion::Planner {
         lassign [my ToWork $center $n] C nw
         set tw [::fivax::vec::unit $tw]
         set nw [::fivax::vec::unit $nw]
-        set native [my NativeArc $P0 $P1 $C $nw $sense $turns $tw $feed $src]
-        if {[llength $native]} {return [concat $pre $native]}
-        set moves $pre
+        lassign [my NativeArc $P0 $P1 $C $nw $sense $turns $tw $feed $src] native moves
+        set moves [concat $pre $moves]
+        if {$native} {return $moves}
         foreach p [::fivax::curve::arc $P0 $P1 $C $nw $sense $turns $tol] {
             lappend moves {*}[my AddWork feed $p $tw $feed $src]
         }
         return $moves
     }
 
-    # Returns the moves of a native arc, or {} when it cannot be one: the
-    # -arcs setting is points, the control has no arc in the output
+    # Returns {native moves}: native 1 and the moves of a native arc, or
+    # native 0 and the moves written before it was found that it cannot
+    # be one (the caller writes its points): the -arcs setting is points, the control has no arc in the output
     # frame's plane of the arc, the arc makes extra turns, its ends lie
     # at radii more than 0.001 mm apart, the tool axis differs from the
     # last written point's or the arc does not start there. The rotaries
@@ -71,19 +72,19 @@ oo::define ::fivax::motion::Planner {
     # center (output frame), plane (17, 18, 19) and dir (2 clockwise, 3
     # counter-clockwise about the plane's normal) to a move's keys.
     method NativeArc {P0 P1 C n sense turns t feed src} {
-        if {$S(arcs) ne "native" || $turns != 0} {return {}}
+        if {$S(arcs) ne "native" || $turns != 0} {return {0 {}}}
         set planes [dict get $S(output) arcPlanes]
-        if {![llength $planes]} {return {}}
+        if {![llength $planes]} {return {0 {}}}
         if {abs([::fivax::vec::norm [::fivax::vec::sub $P0 $C]]
                 - [::fivax::vec::norm [::fivax::vec::sub $P1 $C]]) > 0.001} {
-            return {}
+            return {0 {}}
         }
         set moves [my flush]
-        if {$S(last) eq ""} {return $moves}
+        if {$S(last) eq ""} {return [list 0 $moves]}
         lassign $S(last) jl Pl tl
         if {[::fivax::vec::norm [::fivax::vec::sub $Pl $P0]] > 1e-6
                 || [::fivax::vec::angle $tl $t] > 1e-9} {
-            return $moves
+            return [list 0 $moves]
         }
         set q [lrange $jl 3 4]
         set c [my OutPoint $C $q]
@@ -95,9 +96,11 @@ oo::define ::fivax::motion::Planner {
                 set dir [expr {$sense * [lindex $axis $i] > 0 ? 3 : 2}]
             }
         }
+        # a rise below half the output's 0.001 mm (CL points rounded to
+        # 4 decimals rise by up to about 1e-4 mm) is a flat arc
         set rise [::fivax::vec::dot [::fivax::vec::sub $P1 $P0] $n]
-        if {$plane eq "" || (abs($rise) > 1e-6 && ![dict get $S(output) helix])} {
-            return $moves
+        if {$plane eq "" || (abs($rise) >= 0.0005 && ![dict get $S(output) helix])} {
+            return [list 0 $moves]
         }
         set joints [concat [::fivax::kin::position $S(model) $P1 $q] $q]
         set f [my FeedClamp $feed]
@@ -110,7 +113,7 @@ oo::define ::fivax::motion::Planner {
         set S(lastSrc) $src
         set S(lastHole) ""
         incr S(moves)
-        return $moves
+        list 1 $moves
     }
 
     # Adds CL point P, t (already in the workpiece frame) as add does.
@@ -125,9 +128,9 @@ oo::define ::fivax::motion::Planner {
     }
 
     # Starts watching a new operation for work-plane segments (see Route)
-    # when -workplane is auto and the control has work planes.
+    # unless -workplane is off or the control has no work plane.
     method HoldPlane {} {
-        set S(wp) [expr {$S(workplane) eq "auto" && [dict get $S(output) plane] ? "free" : "off"}]
+        set S(wp) [expr {$S(workplane) ne "off" && [dict get $S(output) plane] ? "free" : "off"}]
         set S(held) ""
         set S(heldAxis) ""
     }

@@ -74,8 +74,8 @@ namespace eval ::fivax::motion {
             "TCP mode: X Y Z are the tool tip, feeds the tip feed (G94), no linearisation: the control keeps the tip on the path (default: the machine's tcp)"}
         {-arcs {enum native points} native MODE
             "CL arcs: native (G2/G3, Klartext C, where the control has them in the output frame's plane) or points"}
-        {-workplane {enum auto off} auto MODE
-            "an operation with a fixed tool axis off Z: in a tilted work plane (auto, where the control has one) or as five-axis blocks (off)"}
+        {-workplane {enum auto on off} auto MODE
+            "an operation with a fixed tool axis off Z: in a tilted work plane (auto: where the control has one; on: an error where it has none) or as five-axis blocks (off)"}
         {-output any {} DICT "what the output dialect writes (the output Writer's capabilities)"}
         {-angle-step {real min 0} 0 DEG
             "output resolution of the rotary words: rotaries are rounded to it before X Y Z are computed (0: exact)"}
@@ -102,7 +102,12 @@ oo::class create ::fivax::motion::Planner {
         dict for {opt value} $opts {set S([string range $opt 1 end]) $value}
         if {$S(clearance) eq ""} {set S(clearance) [dict get $machine clearance]}
         if {$S(tcp) eq ""} {set S(tcp) [dict get $machine tcp]}
-        set S(output) [dict merge {inverse 1 plane 0 arcPlanes {} helix 0} $S(output)]
+        set S(output) [dict merge {controller "" inverse 1 plane 0 arcPlanes {} helix 0} $S(output)]
+        if {$S(workplane) eq "on" && ![dict get $S(output) plane]} {
+            ::fivax::Fail OPTION VALUE "-workplane on: the [dict get $S(output) controller]\
+                control [expr {$S(tcp) ? {in TCP mode } : {}}]has no tilted work plane:\
+                use -workplane auto (rotaries positioned, X Y Z transformed) or off"
+        }
         if {$S(tcp)} {
             # the control interpolates the tip: no linearisation, tip feed
             set S(tol) 0.0

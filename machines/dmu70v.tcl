@@ -1,0 +1,17 @@
+# dmu70v -- DMU 70 V style nutating table on a Sinumerik 840D: the outer
+# table axis B is inclined 45 deg in the YZ plane and passes through
+# (0, 0, -100) (an assumption: set the machine's values), the round table
+# C (carried by B) turns about +Z through the origin. B 0..180 (B = 180:
+# the table face vertical), C endless. The DMU 70 V was sold with a
+# Heidenhain or a Siemens control; this file takes the Sinumerik (TRAORI,
+# CYCLE800), dmu125p the Heidenhain. Reachable tool axes: K >= 0.
+name        dmu70v
+description {DMU 70 V style: 45 deg nutating B table, C table, Sinumerik 840D}
+units       mm
+family      chain
+controller  sinumerik
+axes {
+    B {side table direction {0 0.70710678118654757 0.70710678118654757}
+       point {0 0 -100} sense 1 min 0 max 180}
+    C {side table direction {0 0 1} point {0 0 0} sense 1 continuous 1}
+}
