@@ -40,6 +40,8 @@ namespace eval ::fivax::output {
         {-seq-start {maybe int min 0} {} N "first sequence number (default: the .def's)"}
         {-seq-incr {maybe int min 1} {} N "sequence number step (default: the .def's)"}
         {-program {int min 0} 1000 N "program number"}
+        {-arc-words {enum ijk r} ijk FORM
+            "native arcs' centre: I J K from the start (ijk) or the radius R (r; full circles and arcs within 5 deg of 180 keep I J K)"}
         {-insert {enum checked verbatim} checked MODE
             "INSERT text: written when it reads as NC words of the dialect, else as a comment with a warning (checked), or as it is (verbatim)"}
         {-warn any {} CMD "command prefix called with each warning (a MIN/MAX Warning of the .def, INSERT text not written)"}
@@ -740,13 +742,37 @@ oo::class create ::fivax::output::Writer {
             set feedMode direct
         }
         lappend words {*}[my AxisWords $rec {X Y Z} {fourth_axis fifth_axis}]
-        foreach name {I J K} s [list $sx $sy $sz] c [list $cx $cy $cz] {
-            if {$name in $offsets} {
-                lappend words $name [expr {$c - [::fivax::num::fixed $s $d]}]
+        set start [lmap v [list $sx $sy $sz] {::fivax::num::fixed $v $d}]
+        set radius [expr {[dict get $cfg -arc-words] eq "r" ? [my ArcRadius $rec $start] : ""}]
+        if {$radius ne ""} {
+            $nc force once R
+            lappend words R $radius
+        } else {
+            foreach name {I J K} s $start c [list $cx $cy $cz] {
+                if {$name in $offsets} {lappend words $name [expr {$c - $s}]}
             }
         }
         lappend words F [dict get $rec rate]
         lappend lines [$nc block $words]
+    }
+
+    # Returns the signed radius R of arc record rec from the written start:
+    # negative when the arc turns more than 180 degrees; "" (write I J K)
+    # for a full circle and within 5 degrees of 180, where R leaves the
+    # centre ill-defined.
+    method ArcRadius {rec start} {
+        set axes [dict get $rec axes]
+        set c [dict get $rec center]
+        set n [dict get {17 {0 0 1} 18 {0 1 0} 19 {1 0 0}} [dict get $rec plane]]
+        set u [::fivax::vec::sub $start $c]
+        set v [::fivax::vec::sub [list [dict get $axes X] [dict get $axes Y] [dict get $axes Z]] $c]
+        # the turn about the plane's normal, counter-clockwise positive
+        set turn [expr {atan2([::fivax::vec::dot $n [::fivax::vec::cross $u $v]], [::fivax::vec::dot $u $v])}]
+        if {[dict get $rec dir] == 2} {set turn [expr {-$turn}]}
+        set sweep [::fivax::num::deg [expr {$turn <= 1e-9 ? $turn + 2.0 * $::fivax::num::pi : $turn}]]
+        if {$sweep > 355.0 || abs($sweep - 180.0) < 5.0} {return ""}
+        set r [::fivax::vec::norm $u]
+        expr {$sweep > 180.0 ? -$r : $r}
     }
 
     # Returns the blocks that tilt the work plane of a plane record

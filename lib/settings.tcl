@@ -18,7 +18,7 @@ namespace eval ::fivax::settings {
 # ::fivax::settings::table --
 #	Returns the option table of a posting job: -machine, -controller (the
 #	output layer's dialects; default: the machine's), -arc-tol, -log, the
-#	output layer's -insert and the planner's options but -angle-step and
+#	output layer's -arc-words and -insert and the planner's options but -angle-step and
 #	-output (set from the output layer: its resolution and what it writes).
 proc ::fivax::settings::table {} {
     variable Job
@@ -26,7 +26,8 @@ proc ::fivax::settings::table {} {
     concat [lrange $Job 0 0] \
         [list [list -controller [list maybe enum {*}$controllers] {} NAME \
             "controller dialect: [join $controllers {, }] (default: the machine's)"]] \
-        [lrange $Job 1 end] [list [lsearch -inline -index 0 $::fivax::output::Options -insert]] \
+        [lrange $Job 1 end] \
+        [lmap opt {-arc-words -insert} {lsearch -inline -index 0 $::fivax::output::Options $opt}] \
         [::fivax::opts::drop $::fivax::motion::Options {-angle-step -output}]
 }
 

@@ -103,6 +103,27 @@ proc ::fivax::verify::dialects {} {
     dict keys $Dialects
 }
 
+# ::fivax::verify::RadiusCentre --
+#	Returns the centre of an R-form arc from start to end in plane (17,
+#	18, 19: normal +Z, +Y, +X) turning dir (2 clockwise, 3
+#	counter-clockwise about the normal) with radius r (negative: more
+#	than 180 degrees), as the controls define it; "" while the start is
+#	unknown. The centre lies on the chord's bisector, r^2 - (c/2)^2 from
+#	the chord's middle, left of the chord (seen along -n) for a short
+#	counter-clockwise or a long clockwise arc.
+proc ::fivax::verify::RadiusCentre {start end r plane dir} {
+    if {"" in $start || "" in $end} {return ""}
+    set n [dict get {17 {0 0 1} 18 {0 1 0} 19 {1 0 0}} $plane]
+    set chord [::fivax::vec::sub $end $start]
+    set half [expr {[::fivax::vec::norm $chord] / 2.0}]
+    if {$half < 1e-12} {return ""}
+    set left [::fivax::vec::unit [::fivax::vec::cross $n $chord]]
+    set d [expr {sqrt(max(0.0, $r * $r - $half * $half))}]
+    if {($dir == 3) != ($r > 0)} {set d [expr {-$d}]}
+    ::fivax::vec::add [::fivax::vec::scale 0.5 [::fivax::vec::add $start $end]] \
+        [::fivax::vec::scale $d $left]
+}
+
 oo::class create ::fivax::verify::Checker {
     # S: machine, tableOffset, dialect (its table entry), names, rollover,
     # limits, model, the modal state X Y Z q1 q2 motion (0/1) mode
@@ -233,6 +254,8 @@ oo::class create ::fivax::verify::Checker {
         set hole 0
         set start [list $S(X) $S(Y) $S(Z)]
         set ijk {I 0.0 J 0.0 K 0.0}
+        set radius ""
+        set centreGiven 0
         foreach word $words {
             set letter [string index $word 0]
             set value [string range $word 1 end]
@@ -259,6 +282,10 @@ oo::class create ::fivax::verify::Checker {
                 # the peck depth: the hole ends at its bottom all the same
             } elseif {$letter in {I J K} && $S(motion) in {2 3}} {
                 dict set ijk $letter $value
+                set centreGiven 1
+            } elseif {$letter eq "R" && $S(motion) in {2 3}} {
+                set radius $value
+                set centreGiven 1
             } elseif {[set i [lsearch -exact $S(names) $letter]] >= 0} {
                 set q [::fivax::num::rad $value]
                 lassign [lindex $S(limits) $i] min max
@@ -298,10 +325,16 @@ oo::class create ::fivax::verify::Checker {
             }
         }
         if {$S(motion) in {2 3} && [llength $moved]} {
-            # the centre from the start by I J K (incremental)
-            set centre [lmap c $start d [dict values $ijk] {
-                expr {$c eq "" ? "" : $c + $d}
-            }]
+            if {!$centreGiven} {lappend unknown "arc without I J K or R" G$S(motion)}
+            if {$radius ne ""} {
+                set centre [::fivax::verify::RadiusCentre $start [list $S(X) $S(Y) $S(Z)] \
+                    $radius $S(plane) $S(motion)]
+            } else {
+                # the centre from the start by I J K (incremental)
+                set centre [lmap c $start d [dict values $ijk] {
+                    expr {$c eq "" ? "" : $c + $d}
+                }]
+            }
             dict set out arc [list $start $centre $S(plane) $S(motion)]
         }
         dict set out motion $S(motion)

@@ -166,7 +166,7 @@ proc MOM_start_of_program {} {fivax_guard {
         set defFile $mom_definition_file_name
     }
     set options [list -def [fivax::def load $defFile] -warn fivax_warn \
-        -insert [dict get $fivax(settings) -insert]]
+        -insert [dict get $fivax(settings) -insert] -arc-words [dict get $fivax(settings) -arc-words]]
     foreach key {-controller -tcp} {
         if {[dict get $fivax(settings) $key] ne ""} {
             lappend options $key [dict get $fivax(settings) $key]
