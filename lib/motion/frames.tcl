@@ -75,8 +75,11 @@ oo::define ::fivax::motion::Planner {
         if {$S(arcs) ne "native" || $turns != 0} {return {0 {}}}
         set planes [dict get $S(output) arcPlanes]
         if {![llength $planes]} {return {0 {}}}
-        if {abs([::fivax::vec::norm [::fivax::vec::sub $P0 $C]]
-                - [::fivax::vec::norm [::fivax::vec::sub $P1 $C]]) > 0.001} {
+        # the radii in the arc's plane (a helix rises along n)
+        set u0 [::fivax::vec::sub $P0 $C]
+        set u1 [::fivax::vec::sub $P1 $C]
+        if {abs([::fivax::vec::norm [::fivax::vec::sub $u0 [::fivax::vec::scale [::fivax::vec::dot $u0 $n] $n]]]
+                - [::fivax::vec::norm [::fivax::vec::sub $u1 [::fivax::vec::scale [::fivax::vec::dot $u1 $n] $n]]]) > 0.001} {
             return {0 {}}
         }
         set moves [my flush]
