@@ -87,6 +87,31 @@ proc ::fivax::verify::dialects {} {
     dict keys $Dialects
 }
 
+# ::fivax::verify::WordClasses --
+#	Returns {letters chars} when the word pattern re is one bracket
+#	expression of plain characters and ranges, then another one repeated
+#	with + ({[A-Z][-+.0-9]+}), neither with a space: every character
+#	either may stand for, listed; else "" (no such shape: words are
+#	found by the pattern).
+proc ::fivax::verify::WordClasses {re} {
+    if {![regexp {^\[([^]\\^[ ]+)\]\[([^]\\^[ ]+)\]\+$} $re -> first rest]} {return ""}
+    lmap class [list $first $rest] {
+        set chars ""
+        # a - between two characters is a range; first or last, itself
+        while {$class ne ""} {
+            if {[string index $class 1] eq "-" && [string length $class] > 2} {
+                scan [string range $class 0 2] %c-%c lo hi
+                for {set c $lo} {$c <= $hi} {incr c} {append chars [format %c $c]}
+                set class [string range $class 3 end]
+            } else {
+                append chars [string index $class 0]
+                set class [string range $class 1 end]
+            }
+        }
+        set chars
+    }
+}
+
 oo::class create ::fivax::verify::Checker {
     # S: machine, tableOffset, dialect (its table entry), names, rollover,
     # limits, model, the modal state X Y Z q1 q2 motion (0/1) mode
@@ -101,6 +126,7 @@ oo::class create ::fivax::verify::Checker {
         if {$name eq ""} {set name [dict get $machine controller]}
         if {![dict exists $::fivax::verify::Dialects $name]} {set name fanuc}
         set S(dialect) [dict get $::fivax::verify::Dialects $name]
+        set S(wordClasses) [::fivax::verify::WordClasses [dict get $S(dialect) word]]
         set chain [dict get $machine chain]
         set S(names) [lmap axis $chain {dict get $axis name}]
         set S(rollover) [lmap axis $chain {dict get $axis rollover}]
@@ -165,8 +191,7 @@ oo::class create ::fivax::verify::Checker {
             return $out
         }
         dict set out block 1
-        set words [regexp -all -inline -- [dict get $S(dialect) word] $text]
-        set rest [string trim [regsub -all -- [dict get $S(dialect) word] $text ""]]
+        lassign [my Words $text] words rest
         set unknown {}
         if {$rest ne ""} {lappend unknown text $rest}
         set pairs {}
@@ -174,8 +199,7 @@ oo::class create ::fivax::verify::Checker {
         set limit {}
         # G codes first: they decide what the axis words mean
         set machineFrame 0
-        foreach word $words {
-            if {[string index $word 0] ne "G"} continue
+        foreach word [lsearch -all -inline -glob $words G*] {
             set value [string range $word 1 end]
             if {![string is double -strict $value]} continue
             set g [expr {$value == round($value) ? int($value) : $value}]
@@ -265,6 +289,29 @@ oo::class create ::fivax::verify::Checker {
         return $out
     }
 
+    # Returns {words rest}: the address words of text (the dialect's word
+    # pattern, matched in order) and the other text between them,
+    # trimmed. Text that is words separated by single spaces (every block
+    # fivax writes) is split at the spaces instead, when the pattern is
+    # one letter class and a repeated character class (see WordClasses):
+    # the same words, at a fifth of the cost.
+    method Words {text} {
+        if {$S(wordClasses) ne ""} {
+            lassign $S(wordClasses) letters chars
+            set words [split $text " "]
+            foreach word $words {
+                if {[string first [string index $word 0] $letters] < 0 || [string length $word] < 2
+                        || [string trim [string range $word 1 end] $chars] ne ""} {
+                    set words ""
+                    break
+                }
+            }
+            if {$words ne ""} {return [list $words ""]}
+        }
+        set re [dict get $S(dialect) word]
+        list [regexp -all -inline -- $re $text] [string trim [regsub -all -- $re $text ""]]
+    }
+
     # Returns the modal joint vector {X Y Z q1 q2}, or "" while one is unknown.
     method Joints {} {
         if {$S(X) eq "" || $S(Y) eq "" || $S(Z) eq "" || $S(q1) eq "" || $S(q2) eq ""} {
@@ -292,6 +339,14 @@ oo::class create ::fivax::verify::Checker {
     # interpolation from j0 to j1; a rotary that rolls over turns the
     # shortest way.
     method interior {j0 j1 P0 P1 t0 t1} {
+        lassign [::fivax::kin::interpolationError $S(model) $j0 [my Rolled $j0 $j1] \
+            $P0 $P1 $t0 $t1] dp da
+        list $dp [::fivax::num::deg $da]
+    }
+
+    # Returns joints j1 with each rotary that rolls over moved to the
+    # value nearest its value in j0 (the way the controller turns it).
+    method Rolled {j0 j1} {
         namespace upvar ::fivax::num pi pi
         foreach i {3 4} roll $S(rollover) {
             if {$roll} {
@@ -300,13 +355,16 @@ oo::class create ::fivax::verify::Checker {
                 lset j1 $i [expr {$a + $d - 2.0 * $pi * round($d / (2.0 * $pi))}]
             }
         }
-        lassign [::fivax::kin::interpolationError $S(model) $j0 $j1 $P0 $P1 $t0 $t1] dp da
-        list $dp [::fivax::num::deg $da]
+        return $j1
     }
 
     # Reads the NC line (the post's own block) and, when move (a motion
     # move record) carries a CL target (P, t), measures the deviation at
-    # the block end and, for cutting moves, inside the block.
+    # the block end and, for cutting moves, inside the block. Inside the
+    # block the quarter points are measured unless kin
+    # interpolationBound, from the same written values and the errors
+    # at both ends, proves that they cannot exceed the largest deviation
+    # found so far (which is all the summary keeps).
     method block {line move} {
         set joints [dict get [my read $line] joints]
         set P [dict get $move P]
@@ -319,14 +377,21 @@ oo::class create ::fivax::verify::Checker {
         incr S(checked)
         if {$dp > $S(maxPos)} {set S(maxPos) $dp; set S(worst) [dict get $move src]}
         if {$da > $S(maxAng)} {set S(maxAng) $da}
+        # the axis error as a chord (at most the angle), with a rounding margin
+        set ea [expr {[::fivax::num::rad $da] + 1e-12}]
         if {[dict get $move kind] eq "feed" && $S(prev) ne ""} {
-            lassign $S(prev) j0 P0 t0
+            lassign $S(prev) j0 P0 t0 ep0 ea0
             incr S(segments)
-            lassign [my interior $j0 $joints $P0 $P $t0 $t] dp da
-            if {$dp > $S(maxMidPos)} {set S(maxMidPos) $dp; set S(worstMid) [dict get $move src]}
-            if {$da > $S(maxMidAng)} {set S(maxMidAng) $da}
+            set j1 [my Rolled $j0 $joints]
+            lassign [::fivax::kin::interpolationBound $S(model) $j0 $j1 $P0 $P $t0 $t \
+                [expr {max($ep0, $dp)}] [expr {max($ea0, $ea)}]] bp ba
+            if {$bp > $S(maxMidPos) || [::fivax::num::deg $ba] > $S(maxMidAng)} {
+                lassign [my interior $j0 $joints $P0 $P $t0 $t] dp2 da2
+                if {$dp2 > $S(maxMidPos)} {set S(maxMidPos) $dp2; set S(worstMid) [dict get $move src]}
+                if {$da2 > $S(maxMidAng)} {set S(maxMidAng) $da2}
+            }
         }
-        set S(prev) [list $joints $P $t]
+        set S(prev) [list $joints $P $t $dp $ea]
     }
 
     # Returns a dict: checked (CL points), segments, maxPos (mm), maxAng
