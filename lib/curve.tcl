@@ -11,7 +11,7 @@
 #	is a full circle.
 
 namespace eval ::fivax::curve {
-    namespace export arc arcSplit nurbs nurbsAt nurbsPoints nurbsSamples clsfNurbs
+    namespace export arc arcSplit arcLength nurbs nurbsAt nurbsPoints nurbsSamples clsfNurbs
     namespace ensemble create -prefixes 0
     namespace upvar ::fivax::num pi pi
 }
@@ -51,6 +51,16 @@ proc ::fivax::curve::arcSplit {start end center axis sense turns maxSweep} {
         set done [expr {$done + $maxSweep}]
     }
     lappend out [list $end [expr {$sweep - $done}]]
+}
+
+# ::fivax::curve::arcLength --
+#	Returns the length (mm) of an arc (see the file header): its sweep at
+#	the mean radius, with the axial rise of a helix.
+proc ::fivax::curve::arcLength {start end center axis sense turns} {
+    set frame [ArcFrame $start $end $center $axis $sense $turns]
+    if {$frame eq ""} {return [::fivax::vec::norm [::fivax::vec::sub $end $start]]}
+    lassign $frame - - hs he r0 r1 - sweep
+    expr {hypot(0.5 * ($r0 + $r1) * $sweep, $he - $hs)}
 }
 
 # ::fivax::curve::ArcFrame --

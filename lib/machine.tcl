@@ -26,7 +26,7 @@ namespace eval ::fivax::machine {
         tool_length 0 table_offset {0 0 0} axes {} controller fanuc output {}
         clearance 50 safe_z {} feed_min 1 feed_max 20000
         inverse_time_max 9999 max_swing 180 work_offset 54 tool_change_z 0
-        home_rotaries 0 entry_feed {}
+        home_rotaries 0 entry_feed {} tcp 0 tcp_codes {} swivel_record TC1
     }
     variable topRequired {name axes}
     variable axisKeys {side direction point sense min max continuous prefer rollover offset}
@@ -155,6 +155,20 @@ proc ::fivax::machine::parse {text sourceName} {
         if {$v <= 0} {::fivax::Fail MACHINE VALUE "$src: 'entry_feed' must be positive: $v"}
     }
     dict set m entry_feed $v
+    set v [Get $raw tcp]
+    if {$v ni {0 1}} {::fivax::Fail MACHINE VALUE "$src: 'tcp' must be 0 or 1: $v"}
+    dict set m tcp $v
+    set v [Get $raw tcp_codes]
+    if {!([string is list $v] && ([llength $v] == 0 || ([llength $v] == 2
+            && [string is entier -strict [lindex $v 0]] && [string is entier -strict [lindex $v 1]])))} {
+        ::fivax::Fail MACHINE VALUE "$src: 'tcp_codes' must be {} or two M code numbers {on off}: $v"
+    }
+    dict set m tcp_codes $v
+    set v [Get $raw swivel_record]
+    if {![regexp {^[A-Za-z0-9_]+$} $v]} {
+        ::fivax::Fail MACHINE VALUE "$src: 'swivel_record' must be one word of letters, digits and _: $v"
+    }
+    dict set m swivel_record $v
 
     set output [Get $raw output]
     if {![string is list $output] || [llength $output] % 2} {

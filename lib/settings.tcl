@@ -18,8 +18,8 @@ namespace eval ::fivax::settings {
 # ::fivax::settings::table --
 #	Returns the option table of a posting job: -machine, -controller (the
 #	output layer's dialects; default: the machine's), -arc-tol, -log, the
-#	output layer's -insert and the planner's options but -angle-step (set
-#	from the output resolution).
+#	output layer's -insert and the planner's options but -angle-step and
+#	-output (set from the output layer: its resolution and what it writes).
 proc ::fivax::settings::table {} {
     variable Job
     set controllers [dict keys $::fivax::output::Dialects]
@@ -27,7 +27,7 @@ proc ::fivax::settings::table {} {
         [list [list -controller [list maybe enum {*}$controllers] {} NAME \
             "controller dialect: [join $controllers {, }] (default: the machine's)"]] \
         [lrange $Job 1 end] [list [lsearch -inline -index 0 $::fivax::output::Options -insert]] \
-        [::fivax::opts::drop $::fivax::motion::Options -angle-step]
+        [::fivax::opts::drop $::fivax::motion::Options {-angle-step -output}]
 }
 
 # ::fivax::settings::parse --

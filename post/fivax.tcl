@@ -167,19 +167,30 @@ proc MOM_start_of_program {} {fivax_guard {
     }
     set options [list -def [fivax::def load $defFile] -warn fivax_warn \
         -insert [dict get $fivax(settings) -insert]]
-    if {[dict get $fivax(settings) -controller] ne ""} {
-        lappend options -controller [dict get $fivax(settings) -controller]
+    foreach key {-controller -tcp} {
+        if {[dict get $fivax(settings) $key] ne ""} {
+            lappend options $key [dict get $fivax(settings) $key]
+        }
     }
     set fivax(out) [fivax::output create $machine {*}$options]
+    set planOptions [fivax::settings pick $fivax(settings) motion]
+    if {![dict get [$fivax(out) capabilities] inverse] && [dict get $planOptions -feed] eq "inverse"} {
+        # no inverse time (Klartext): F is the feed of all axes together,
+        # degrees counted as mm, which keeps the tip feed
+        dict set planOptions -feed dpm
+        fivax_log "note: [dict get [$fivax(out) capabilities] controller] has no inverse-time feed:\
+            moves with rotary motion get the combined feed of all axes (-feed dpm)"
+    }
     set fivax(plan) [fivax::motion create $machine -angle-step [$fivax(out) angleStep] \
-        {*}[fivax::settings pick $fivax(settings) motion]]
+        -output [$fivax(out) capabilities] {*}$planOptions]
     set fivax(verify) [fivax::verify create $machine {*}[fivax::settings pick $fivax(settings) verify]]
     set fivax(tool) {}
     set fivax(toolChanges) 0
     set fivax(positioned) 0
     set fivax(opStart) 0
     set fivax(cycle) {}
-    fivax_out [$fivax(out) start "[fivax_program_name] - [dict get $machine name]"]
+    fivax_out [$fivax(out) start "[fivax_program_name] - [dict get $machine name]" \
+        [fivax_program_name]]
 }}
 
 proc MOM_start_of_path {} {fivax_guard {
@@ -221,7 +232,7 @@ proc MOM_tool_change {} {fivax_guard {
     # the tool in the spindle again: no second change
     if {[list $mom_tool_number $adjust $len] eq $fivax(tool)} return
     set fivax(tool) [list $mom_tool_number $adjust $len]
-    fivax_emit [$fivax(plan) flush]
+    fivax_emit [$fivax(plan) endPlane]
     $fivax(plan) setTool $len
     $fivax(verify) setTool $len
     fivax_out [$fivax(out) toolChange $mom_tool_number $adjust]
@@ -309,25 +320,25 @@ proc MOM_rapid_move {} {fivax_guard {fivax_motion rapid}}
 
 proc MOM_linear_move {} {fivax_guard {fivax_motion feed}}
 
-# Arcs (CIRCLE + GOTO) and helixes are written as points within the arc
-# tolerance: on a five-axis machine without TCP an arc does not stay an arc.
+# Arcs (CIRCLE + GOTO) and helixes go to the planner, which writes them as
+# the control's arcs where they stay arcs in the blocks' frame, else as
+# points within the arc tolerance.
 proc MOM_circular_move {} {fivax_guard fivax_arc}
 proc MOM_helix_move {} {fivax_guard fivax_arc}
 
 # fivax_arc -- Hands the points of the current arc piece to the planner.
 proc fivax_arc {} {
     global fivax mom_prev_mcs_goto mom_mcs_goto mom_arc_center mom_arc_axis
-    global mom_arc_direction mom_arc_times
+    global mom_arc_direction mom_arc_times mom_tool_axis mom_feed_rate
     set xyz {0 1 2}
-    set points [fivax::curve arc [lmap i $xyz {set mom_prev_mcs_goto($i)}] \
+    fivax_emit [$fivax(plan) arc [lmap i $xyz {set mom_prev_mcs_goto($i)}] \
         [lmap i $xyz {set mom_mcs_goto($i)}] [lmap i $xyz {set mom_arc_center($i)}] \
         [lmap i $xyz {set mom_arc_axis($i)}] \
         [expr {$mom_arc_direction eq "CLW" ? -1 : 1}] \
         [expr {[info exists mom_arc_times] ? $mom_arc_times : 0}] \
-        [dict get $fivax(settings) -arc-tol]]
-    foreach point $points {
-        fivax_motion feed $point
-    }
+        [lmap i $xyz {set mom_tool_axis($i)}] \
+        [expr {[info exists mom_feed_rate] ? $mom_feed_rate : 0.0}] \
+        [fivax_where] [dict get $fivax(settings) -arc-tol]]
 }
 
 # NURBS (NX's spline motion, mom_kin_nurbs_output_type BSPLINE): the
@@ -429,7 +440,7 @@ proc fivax_emit {moves} {
 
 proc MOM_end_of_path {} {fivax_guard {
     global fivax
-    fivax_emit [$fivax(plan) flush]
+    fivax_emit [$fivax(plan) endPath]
 }}
 
 proc MOM_pprint {} {fivax_guard {

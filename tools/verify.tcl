@@ -133,16 +133,17 @@ proc ::verifytool::Line {line where n} {
         dict incr S(op) limits
         if {[dict get $S(op) limitAt] eq ""} {dict set S(op) limitAt "$where ($axis)"}
     }
-    set joints [dict get $blk joints]
-    if {$joints eq "" || ![llength [dict get $blk moved]]} {
+    set pose [dict get $blk pose]
+    if {$pose eq "" || ![llength [dict get $blk moved]]} {
         if {[llength [dict get $blk moved]]} {set S(prev) {}}
         return
     }
-    lassign [$S(checker) tip $joints] P t
+    set joints [dict get $blk joints]
+    lassign $pose P t
     dict incr S(op) moves
     Travel $joints
     set motion [dict get $blk motion]
-    if {$motion == 0 && $S(prevMotion) == 1} {dict incr S(op) retracts}
+    if {$motion == 0 && $S(prevMotion) in {1 2 3}} {dict incr S(op) retracts}
     set figures {{} {} {} {}}
     if {[dict get $blk hole]} {
         # a canned cycle's hole, checked at its bottom; its motions are
@@ -154,7 +155,7 @@ proc ::verifytool::Line {line where n} {
             [dict get $blk F] [dict get $blk mode]]
         return
     }
-    if {$motion == 1} {set figures [Cutting $blk $joints $P $t $where]}
+    if {$motion in {1 2 3}} {set figures [Cutting $blk $joints $P $t $where]}
     lappend S(rows) [list $n [dict get $S(op) name] $motion $joints $P $t {*}$figures \
         [dict get $blk F] [dict get $blk mode]]
     set S(prev) [list $joints $P $t]
@@ -187,7 +188,7 @@ proc ::verifytool::StartOp {name} {
 #	that rolls over turns the shortest way).
 proc ::verifytool::Travel {joints} {
     variable S
-    if {$S(prev) eq ""} return
+    if {$S(prev) eq "" || $joints eq "" || [lindex $S(prev) 0] eq ""} return
     set twoPi [expr {2.0 * acos(-1)}]
     set tr {}
     foreach i {3 4} roll $S(rollover) acc [dict get $S(op) travel] {
@@ -212,9 +213,18 @@ proc ::verifytool::Cutting {blk joints P t where {match Match}} {
         if {[dict get $S(op) feedAt] eq ""} {dict set S(op) feedAt "$where: $issue"}
     }
     set out {{} {} {} {}}
-    if {$S(prev) ne ""} {
+    set inside {}
+    if {[dict get $blk arc] ne ""} {
+        set inside [ArcInside [dict get $blk arc] [dict get $blk words]]
+    } elseif {$S(prev) ne "" && [dict get $blk space] eq "joint" && $joints ne ""
+            && [lindex $S(prev) 0] ne ""} {
+        # joint mode: the control interpolates the joints linearly (in TCP
+        # mode and in a work plane it keeps the tip on the line itself)
         lassign $S(prev) j0 P0 t0
-        lassign [$S(checker) interior $j0 $joints $P0 $P $t0 $t] midPos midAng
+        set inside [$S(checker) interior $j0 $joints $P0 $P $t0 $t]
+    }
+    if {[llength $inside]} {
+        lassign $inside midPos midAng
         Max S(op) midPos $midPos $where
         Max S(op) midAng $midAng $where
         lset out 2 $midPos
@@ -228,6 +238,34 @@ proc ::verifytool::Cutting {blk joints P t where {match Match}} {
         lset out 1 $endAng
     }
     return $out
+}
+
+# ::verifytool::ArcInside --
+#	Returns {d a} for an arc block (arc: {start centre plane dir} in the
+#	block's space): the largest distance (mm) of its points within
+#	-arc-tol from the CL path and the angle (deg) of the axis from the
+#	CL axis there; {} without a CL path. The cursor stays.
+proc ::verifytool::ArcInside {arc words} {
+    variable S
+    if {![llength $S(clPoints)]} {return {}}
+    lassign $arc start centre plane dir
+    set normal [dict get {17 {0 0 1} 18 {0 1 0} 19 {1 0 0}} $plane]
+    set end [lmap c {X Y Z} s $start {
+        expr {[dict exists $words $c] ? [dict get $words $c] : $s}
+    }]
+    set worst {0.0 0.0}
+    foreach q [::fivax::curve::arc $start $end $centre $normal [expr {$dir == 3 ? 1 : -1}] 0 \
+            [dict get $S(opts) -arc-tol]] {
+        lassign [$S(checker) poseAt $q] P t
+        lassign [::fivax::clpath nearest $S(clPoints) $P $t $S(cursor) \
+            [dict get $S(opts) -window]] d - - - tq
+        if {$d > [dict get $S(opts) -tol]} {
+            lassign [::fivax::clpath nearest $S(clPoints) $P $t $S(cursor) -1] d - - - tq
+        }
+        set a [::fivax::num::deg [::fivax::vec::angle $t $tq]]
+        set worst [list [expr {max([lindex $worst 0], $d)}] [expr {max([lindex $worst 1], $a)}]]
+    }
+    return $worst
 }
 
 # ::verifytool::FeedIssue --
@@ -378,8 +416,11 @@ proc ::verifytool::Csv {path rows names} {
         lassign $row line op motion joints P t ep ea mp ma F mode
         lassign $joints X Y Z q1 q2
         set vals [list $line [::fivax::nctool::csvField $op] $motion]
-        foreach v [list $X $Y $Z] {lappend vals [::fivax::num::fixed $v 4]}
-        foreach q [list $q1 $q2] {lappend vals [::fivax::num::fixed [::fivax::num::deg $q] 4]}
+        # (a work plane's rotaries are the control's: no joint values)
+        foreach v [list $X $Y $Z] {lappend vals [expr {$v eq "" ? "" : [::fivax::num::fixed $v 4]}]}
+        foreach q [list $q1 $q2] {
+            lappend vals [expr {$q eq "" ? "" : [::fivax::num::fixed [::fivax::num::deg $q] 4]}]
+        }
         foreach v [concat $P] {lappend vals [::fivax::num::fixed $v 6]}
         foreach v $t {lappend vals [::fivax::num::fixed $v 7]}
         foreach v [list $ep $ea $mp $ma] {

@@ -31,7 +31,9 @@ oo::define ::fivax::motion::Planner {
     # can neither be native nor expanded here.
     method hole {P t cycle native src} {
         namespace upvar ::fivax::motion expandable expandable
-        set moves [my flush]
+        lassign [my Route [list hole $P $t $cycle $native $src] $t] done pre
+        if {$done} {return $pre}
+        set moves [concat $pre [my flush]]
         lassign [my ToWork $P $t] P t
         set t [::fivax::vec::unit $t]
         incr S(points)
@@ -48,14 +50,13 @@ oo::define ::fivax::motion::Planner {
         set rec(initial) [my HolePoint $P $t [expr {max($rapid, $retract)}] $q1 $q2 $lab]
         set rec(r) [my HolePoint $P $t $rapid $q1 $q2 $lab]
         set rec(bottom) [my HolePoint $P $t $feed $q1 $q2 $lab]
-        set axisZ [::fivax::kin::toolInMachine $S(model) [lrange [lindex $rec(bottom) 0] 3 4]]
-        set native [expr {$native && abs([lindex $axisZ 2] - 1.0) < 1e-9}]
+        set native [expr {$native && [my AlongOutZ $t [lrange [lindex $rec(bottom) 0] 3 4]]}]
         if {!$native && $event ni $expandable} {
             ::fivax::Fail MOTION CYCLE "$src: a $event cycle with the tool not along the\
                 machine's Z axis cannot be expanded into moves on [dict get $ctx name]"
         }
         set f [my FeedClamp $rate]
-        set zi [lindex $rec(initial) 0 2]
+        set zi [lindex [my Out [lindex $rec(initial) 0]] 2]
         if {$native && [my NextHole $q1 $q2 $zi]} {
             # the canned cycle goes on: it moves to the hole at its initial level
             lassign $S(lastHole) - - zi
@@ -69,7 +70,7 @@ oo::define ::fivax::motion::Planner {
         if {$native} {
             lappend new [dict merge [my Move cycle [lindex $rec(bottom) 0] {X Y Z} \
                 [lindex $rec(bottom) 1] $t [list direct $f $f 0.0] $src] \
-                [dict create event $event r [lindex $rec(r) 0 2] initial $zi \
+                [dict create event $event r [lindex [my Out [lindex $rec(r) 0]] 2] initial $zi \
                     step $step delay $delay]]
         } else {
             lappend new {*}[my Expand $event rec $t $step $delay $f $src]
@@ -86,10 +87,23 @@ oo::define ::fivax::motion::Planner {
     # Returns 1 when a canned cycle's next hole needs no approach: the
     # last written record was a canned-cycle hole with rotaries q1 q2,
     # and its initial level is not below zi (machine Z).
+    # (Machine Z only: in TCP mode and in a work plane each hole is
+    # approached anew.)
     method NextHole {q1 q2 zi} {
-        if {$S(lastHole) eq ""} {return 0}
+        if {$S(lastHole) eq "" || $S(tcp) || $S(plane) ne ""} {return 0}
         lassign $S(lastHole) p1 p2 z
         expr {abs($p1 - $q1) < 1e-9 && abs($p2 - $q2) < 1e-9 && $zi <= $z + 1e-9}
+    }
+
+    # Returns 1 when the tool axis t (workpiece frame) at rotaries q is
+    # the Z axis of the output frame, so that a canned cycle drills along
+    # it: the machine's Z (joint mode), the workpiece Z (TCP), the plane's
+    # Z (a work plane, always).
+    method AlongOutZ {t q} {
+        if {$S(plane) ne ""} {return 1}
+        if {$S(tcp)} {return [expr {[::fivax::vec::angle $t {0.0 0.0 1.0}] < 1e-9}]}
+        set axisZ [::fivax::kin::toolInMachine $S(model) $q]
+        expr {abs([lindex $axisZ 2] - 1.0) < 1e-9}
     }
 
     # Returns the point record of the point d along unit t from P with

@@ -58,11 +58,16 @@ oo::define ::fivax::motion::Planner {
     # Returns a move record (see flush) of the given kind to joints
     # {X Y Z q1 q2}, writing the axes in write (X Y Z, and R for both
     # rotaries); feed is {mode feed rate tip} or {} for rapids.
+    # X Y Z are those of the output frame (see Out); in a work plane no
+    # rotary is written.
     method Move {kind joints write P t feed src {tag ""} {note ""}} {
         lassign [lmap axis $S(axes) {dict get $axis name}] n1 n2
-        lassign $joints X Y Z q1 q2
+        lassign $joints - - - q1 q2
+        lassign [my Out $joints] X Y Z
         set i [lsearch -exact $write R]
-        if {$i >= 0} {set write [lreplace $write $i $i $n1 $n2]}
+        if {$i >= 0} {
+            set write [lreplace $write $i $i {*}[expr {$S(plane) eq "" ? [list $n1 $n2] : {}}]]
+        }
         if {![llength $feed]} {set feed {direct 0 0 0}}
         lassign $feed mode f rate tip
         dict create kind $kind axes [list X $X Y $Y Z $Z $n1 $q1 $n2 $q2] write $write \

@@ -70,6 +70,13 @@ namespace eval ::fivax::motion {
         {-weights {reals 2 gt 0} {1 1} "W1 W2" "travel weights of the tilt and azimuth axes"}
         {-window {int min 2 max 100000} 4000 N
             "CL points the optimiser holds at most (about 1.5 kB each)"}
+        {-tcp {maybe bool} {} "0|1"
+            "TCP mode: X Y Z are the tool tip, feeds the tip feed (G94), no linearisation: the control keeps the tip on the path (default: the machine's tcp)"}
+        {-arcs {enum native points} native MODE
+            "CL arcs: native (G2/G3, Klartext C, where the control has them in the output frame's plane) or points"}
+        {-workplane {enum auto off} auto MODE
+            "an operation with a fixed tool axis off Z: in a tilted work plane (auto, where the control has one) or as five-axis blocks (off)"}
+        {-output any {} DICT "what the output dialect writes (the output Writer's capabilities)"}
         {-angle-step {real min 0} 0 DEG
             "output resolution of the rotary words: rotaries are rounded to it before X Y Z are computed (0: exact)"}
     }
@@ -94,6 +101,14 @@ oo::class create ::fivax::motion::Planner {
         set S(name) [dict get $machine name]
         dict for {opt value} $opts {set S([string range $opt 1 end]) $value}
         if {$S(clearance) eq ""} {set S(clearance) [dict get $machine clearance]}
+        if {$S(tcp) eq ""} {set S(tcp) [dict get $machine tcp]}
+        set S(output) [dict merge {inverse 1 plane 0 arcPlanes {} helix 0} $S(output)]
+        if {$S(tcp)} {
+            # the control interpolates the tip: no linearisation, tip feed
+            set S(tol) 0.0
+            set S(atol) 0.0
+            set S(feed) direct
+        }
         foreach {key name} {feedMin feed_min feedMax feed_max itMax inverse_time_max
             safeZ safe_z} {
             set S($key) [dict get $machine $name]
@@ -117,7 +132,8 @@ oo::class create ::fivax::motion::Planner {
         set S(frame) {}
         array set S {last "" lastHole "" buf {} pathStart 1 points 0 moves 0 travel 0.0
             inserted 0 retracts 0 holds 0 swings 0 unresolved 0 forced 0 dwells 0
-            dwellTurn 0.0 clamps 0 slowdown 0.0 lastKind "" lastSrc ""}
+            dwellTurn 0.0 clamps 0 slowdown 0.0 lastKind "" lastSrc ""
+            held "" heldAxis "" plane "" planeSaved "" wp off}
         set S(entryFeed) [dict get $machine entry_feed]
         my setTool [dict get $machine tool_length]
     }
@@ -149,8 +165,9 @@ oo::class create ::fivax::motion::Planner {
     # machine's sign preference where that costs nothing. Returns the moves
     # still held (as flush).
     method startPath {} {
-        set moves [my flush]
+        set moves [my endPath]
         set S(pathStart) 1
+        my HoldPlane
         return $moves
     }
 
@@ -160,15 +177,10 @@ oo::class create ::fivax::motion::Planner {
     # optimiser's window fills (see flush).
     # Errors: {FIVAX MOTION UNREACHABLE}, {FIVAX MOTION LIMIT}.
     method add {kind P t feed src} {
+        lassign [my Route [list add $kind $P $t $feed $src] $t] done pre
+        if {$done} {return $pre}
         lassign [my ToWork $P $t] P t
-        set t [::fivax::vec::unit $t]
-        incr S(points)
-        if {$S(rotary) eq "greedy"} {
-            return [my Greedy $kind $P $t $feed $src]
-        }
-        my Step $kind $P $t $feed $src
-        if {[llength $S(buf)] < $S(window)} {return {}}
-        my Commit 0
+        concat $pre [my AddWork $kind $P [::fivax::vec::unit $t] $feed $src]
     }
 
     # Returns every move record still held. A move record is a dict:
@@ -189,7 +201,13 @@ oo::class create ::fivax::motion::Planner {
     #          and approach points; empty for positioning moves)
     #   src    FILE:LINE of the CL record; tag "", inserted or reengage;
     #   note   the reason of a retract
+    # A held work-plane segment (see frames.tcl) is posted: in its plane
+    # when it cuts.
     method flush {} {
+        if {$S(wp) eq "hold"} {
+            if {[my HeldCuts]} {return [my StartPlane]}
+            return [my ReleaseHeld free]
+        }
         if {![llength $S(buf)]} {return {}}
         my Commit 1
     }
