@@ -103,29 +103,14 @@ proc ::fivax::verify::dialects {} {
     dict keys $Dialects
 }
 
-# ::fivax::verify::WordClasses --
-#	Returns {letters chars} when the word pattern re is one bracket
-#	expression of plain characters and ranges, then another one repeated
-#	with + ({[A-Z][-+.0-9]+}), neither with a space: every character
-#	either may stand for, listed; else "" (no such shape: words are
-#	found by the pattern).
-proc ::fivax::verify::WordClasses {re} {
-    if {![regexp {^\[([^]\\^[ ]+)\]\[([^]\\^[ ]+)\]\+$} $re -> first rest]} {return ""}
-    lmap class [list $first $rest] {
-        set chars ""
-        # a - between two characters is a range; first or last, itself
-        while {$class ne ""} {
-            if {[string index $class 1] eq "-" && [string length $class] > 2} {
-                scan [string range $class 0 2] %c-%c lo hi
-                for {set c $lo} {$c <= $hi} {incr c} {append chars [format %c $c]}
-                set class [string range $class 3 end]
-            } else {
-                append chars [string index $class 0]
-                set class [string range $class 1 end]
-            }
-        }
-        set chars
-    }
+# ::fivax::verify::LineRe --
+#	Returns the regexp of a line of words of pattern re separated by
+#	single spaces when re is one bracket expression then another one
+#	repeated with + ({[A-Z][-+.0-9]+}), neither with a space (so that
+#	such a line split at its spaces gives the words re finds); else "".
+proc ::fivax::verify::LineRe {re} {
+    if {![regexp {^\[[^]\\^[ ]+\]\[[^]\\^[ ]+\]\+$} $re]} {return ""}
+    return "^${re}( ${re})*\$"
 }
 
 oo::class create ::fivax::verify::Checker {
@@ -142,7 +127,7 @@ oo::class create ::fivax::verify::Checker {
         if {$name eq ""} {set name [dict get $machine controller]}
         if {![dict exists $::fivax::verify::Dialects $name]} {set name fanuc}
         set S(dialect) [dict get $::fivax::verify::Dialects $name]
-        set S(wordClasses) [::fivax::verify::WordClasses [dict get $S(dialect) word]]
+        set S(lineRe) [::fivax::verify::LineRe [dict get $S(dialect) word]]
         set chain [dict get $machine chain]
         set S(names) [lmap axis $chain {dict get $axis name}]
         set S(tcpCodes) [dict get $machine tcp_codes]
@@ -213,15 +198,23 @@ oo::class create ::fivax::verify::Checker {
         set out [dict create block 0 motion $S(motion) moved {} joints {} pose {} \
             space [my Space] arc {} mode $S(mode) F "" feed $S(F) words {} comments $comments \
             limit {} unknown {} hole 0]
-        if {[string trim $text] eq "" || [regexp -- [dict get $S(dialect) skip] $line]} {
+        # a line of plain words (every block fivax writes) is split at its spaces
+        set plain [expr {$S(lineRe) ne "" && [regexp -- $S(lineRe) $text]}]
+        if {(!$plain && [string trim $text] eq "") || [regexp -- [dict get $S(dialect) skip] $line]} {
             dict set out joints [my Joints]
             dict set out pose [my Pose]
             return $out
         }
         dict set out block 1
-        lassign [my Words $text] words rest
         set unknown {}
-        if {$rest ne ""} {lappend unknown text $rest}
+        if {$plain} {
+            set words [split $text " "]
+        } else {
+            set re [dict get $S(dialect) word]
+            set words [regexp -all -inline -- $re $text]
+            set rest [string trim [regsub -all -- $re $text ""]]
+            if {$rest ne ""} {lappend unknown text $rest}
+        }
         set pairs {}
         set moved {}
         set limit {}
@@ -259,32 +252,32 @@ oo::class create ::fivax::verify::Checker {
         set ijk {I 0.0 J 0.0 K 0.0}
         foreach word $words {
             set letter [string index $word 0]
-            set value [string range $word 1 end]
-            if {![string is double -strict $value]} {
+            set x [string range $word 1 end]
+            if {![string is double -strict $x]} {
                 lappend unknown text $word
                 continue
             }
-            lappend pairs $letter $value
+            lappend pairs $letter $x
             if {$letter in {X Y Z}} {
                 if {$machineFrame} {
                     set S($letter) ""
                 } elseif {$S(cycle) && $letter eq "Z"} {
                     # in a canned cycle Z is the hole's bottom
-                    set S(bottom) $value
+                    set S(bottom) $x
                 } else {
-                    set S($letter) $value
+                    set S($letter) $x
                 }
                 if {$S(cycle)} {set hole 1}
                 lappend moved $letter
             } elseif {$letter eq "R" && $S(cycle)} {
-                set S(R) $value
+                set S(R) $x
                 set hole 1
             } elseif {$letter eq "Q" && $S(cycle)} {
                 # the peck depth: the hole ends at its bottom all the same
             } elseif {$letter in {I J K} && $S(motion) in {2 3}} {
-                dict set ijk $letter $value
+                dict set ijk $letter $x
             } elseif {[set i [lsearch -exact $S(names) $letter]] >= 0} {
-                set q [::fivax::num::rad $value]
+                set q [::fivax::num::rad $x]
                 lassign [lindex $S(limits) $i] min max
                 if {$q < $min - 1e-9 || $q > $max + 1e-9} {
                     incr S(limitViolations)
@@ -293,7 +286,7 @@ oo::class create ::fivax::verify::Checker {
                 set S(q[expr {$i + 1}]) $q
                 lappend moved $letter
             } elseif {$letter eq "G"} {
-                set g [expr {$value == round($value) ? int($value) : $value}]
+                set g [expr {$x == round($x) ? int($x) : $x}]
                 switch -exact -- $g {
                     0 {set S(motion) 0}
                     1 {set S(motion) 1}
@@ -311,11 +304,11 @@ oo::class create ::fivax::verify::Checker {
             } elseif {$letter eq "F"} {
                 # (G4 F: a Sinumerik dwell time, no feed)
                 if {!$dwell} {
-                    set S(F) $value
-                    dict set out F $value
+                    set S(F) $x
+                    dict set out F $x
                 }
             } elseif {$letter eq "M" && [llength $S(tcpCodes)]
-                    && [set k [lsearch -exact $S(tcpCodes) [expr {int($value)}]]] >= 0} {
+                    && [set k [lsearch -exact $S(tcpCodes) [expr {int($x)}]]] >= 0} {
                 set S(tcp) [expr {$k == 0}]
             } elseif {$letter ni $::fivax::verify::KnownLetters} {
                 lappend unknown "letter $letter" $word
@@ -349,29 +342,6 @@ oo::class create ::fivax::verify::Checker {
             dict set out pose [my Pose]
         }
         return $out
-    }
-
-    # Returns {words rest}: the address words of text (the dialect's word
-    # pattern, matched in order) and the other text between them,
-    # trimmed. Text that is words separated by single spaces (every block
-    # fivax writes) is split at the spaces instead, when the pattern is
-    # one letter class and a repeated character class (see WordClasses):
-    # the same words, at a fifth of the cost.
-    method Words {text} {
-        if {$S(wordClasses) ne ""} {
-            lassign $S(wordClasses) letters chars
-            set words [split $text " "]
-            foreach word $words {
-                if {[string first [string index $word 0] $letters] < 0 || [string length $word] < 2
-                        || [string trim [string range $word 1 end] $chars] ne ""} {
-                    set words ""
-                    break
-                }
-            }
-            if {$words ne ""} {return [list $words ""]}
-        }
-        set re [dict get $S(dialect) word]
-        list [regexp -all -inline -- $re $text] [string trim [regsub -all -- $re $text ""]]
     }
 
     # Returns the space of X Y Z now: plane, tcp or joint.
@@ -563,7 +533,7 @@ oo::class create ::fivax::verify::Checker {
     # axis at joints from tip P and unit axis t.
     method deviation {joints P t} {
         lassign [::fivax::kin::forward $S(model) $joints] Pm tm
-        list [::fivax::vec::norm [::fivax::vec::sub $Pm $P]] \
+        list [::fivax::vec::dist $Pm $P] \
             [::fivax::num::deg [::fivax::vec::angle $tm $t]]
     }
 
@@ -612,8 +582,9 @@ oo::class create ::fivax::verify::Checker {
         }
         set t [dict get $move t]
         lassign $pose Pm tm
-        set dp [::fivax::vec::norm [::fivax::vec::sub $Pm $P]]
-        set da [::fivax::num::deg [::fivax::vec::angle $tm $t]]
+        set dp [::fivax::vec::dist $Pm $P]
+        set angle [::fivax::vec::angle $tm $t]
+        set da [::fivax::num::deg $angle]
         incr S(checked)
         if {$dp > $S(maxPos)} {set S(maxPos) $dp; set S(worst) [dict get $move src]}
         if {$da > $S(maxAng)} {set S(maxAng) $da}
@@ -623,7 +594,7 @@ oo::class create ::fivax::verify::Checker {
             return
         }
         # the axis error as a chord (at most the angle), with a rounding margin
-        set ea [expr {[::fivax::num::rad $da] + 1e-12}]
+        set ea [expr {$angle + 1e-12}]
         if {[dict get $move kind] eq "feed" && $S(prev) ne ""} {
             lassign $S(prev) j0 P0 t0 ep0 ea0
             incr S(segments)

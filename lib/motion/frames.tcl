@@ -74,14 +74,14 @@ oo::define ::fivax::motion::Planner {
         if {$S(arcs) ne "native" || $turns != 0} {return {}}
         set planes [dict get $S(output) arcPlanes]
         if {![llength $planes]} {return {}}
-        if {abs([::fivax::vec::norm [::fivax::vec::sub $P0 $C]]
-                - [::fivax::vec::norm [::fivax::vec::sub $P1 $C]]) > 0.001} {
+        if {abs([::fivax::vec::dist $P0 $C]
+                - [::fivax::vec::dist $P1 $C]) > 0.001} {
             return {}
         }
         set moves [my flush]
         if {$S(last) eq ""} {return $moves}
         lassign $S(last) jl Pl tl
-        if {[::fivax::vec::norm [::fivax::vec::sub $Pl $P0]] > 1e-6
+        if {[::fivax::vec::dist $Pl $P0] > 1e-6
                 || [::fivax::vec::angle $tl $t] > 1e-9} {
             return $moves
         }
