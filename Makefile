@@ -38,8 +38,9 @@ docs: deps
 	@rm -f docs/verify-ttr-axes.svg docs/verify-ttr-path.svg
 	$(TCLSH) tools/kinerr.tcl -machine machines/ttr-tr.tcl -d B=0.01 -d C=0.02 -svg docs/kinerr-ttr.svg out/paper-ttr.nc
 
-# Speed figures on a generated 200k-point file, beside tools/bench-baseline.txt
-# (BENCH_ARGS: e.g. -points 20000, -noreplay, -save).
+# End-to-end speed on generated 50k, 200k and 1M-point files (records/s,
+# wall time, peak RSS) beside a minimal loop of ours (BENCH_ARGS: e.g.
+# -sizes "20000 100000", -machine machines/tt-ac.tcl). Some minutes.
 bench: deps
 	$(TCLSH) tools/bench.tcl $(BENCH_ARGS)
 

@@ -58,7 +58,7 @@ proc ::fivax::curve::arcSplit {start end center axis sense turns maxSweep} {
 #	the mean radius, with the axial rise of a helix.
 proc ::fivax::curve::arcLength {start end center axis sense turns} {
     set frame [ArcFrame $start $end $center $axis $sense $turns]
-    if {$frame eq ""} {return [::fivax::vec::norm [::fivax::vec::sub $end $start]]}
+    if {$frame eq ""} {return [::fivax::vec::dist $end $start]}
     lassign $frame - - hs he r0 r1 - sweep
     expr {hypot(0.5 * ($r0 + $r1) * $sweep, $he - $hs)}
 }
@@ -425,7 +425,7 @@ proc ::fivax::curve::Deviation {curve t0 t1 from to tol cacheVar} {
         set wI 0.0
         for {set i 1} {$i < $p} {incr i} {
             set li [::fivax::vec::lerp $p0 $pp [expr {double($i) / $p}]]
-            set leg [expr {max($leg, [::fivax::vec::norm [::fivax::vec::sub [lindex $q $i] $li]])}]
+            set leg [expr {max($leg, [::fivax::vec::dist [lindex $q $i] $li])}]
             set wI [expr {max($wI, [lindex $bez $i 3])}]
         }
         set wE [expr {min([lindex $bez 0 3], [lindex $bez end 3])}]

@@ -27,7 +27,8 @@
 #	Errors: {FIVAX KIN <DETAIL>}.
 
 namespace eval ::fivax::kin {
-    namespace export model forward orientations position interpolationError toolInMachine
+    namespace export model forward orientations position interpolationError \
+        interpolationBound toolInMachine
     namespace ensemble create -prefixes 0
     namespace upvar ::fivax::num pi pi
 
@@ -119,6 +120,18 @@ proc ::fivax::kin::model {machine toolLength {tableOffset ""}} {
                         $k1 $dP $dM $m1u2 $m1n $zpu2 $zpn \
                         [expr {double([dict get $m s1])}] [expr {double([dict get $m s2])}] \
                         [dict get $m z1] [dict get $m z2]]
+
+    # Constants of interpolationBound: rh = |u1 x p1|, the distance of the
+    # tip from a head axis 1 (the point it turns is the zero-pose tip,
+    # -p1 from p1); k1 = |u1 x Z|, the distance of Z from axis 1 on the
+    # unit sphere; scale, the size of the axis points (rounding margin).
+    lassign [dict get $m p1] px1 py1 pz1
+    lassign [dict get $m p2] px2 py2 pz2
+    set rh [expr {sqrt(($y1 * $pz1 - $z1 * $py1) ** 2 + ($z1 * $px1 - $x1 * $pz1) ** 2
+        + ($x1 * $py1 - $y1 * $px1) ** 2)}]
+    set scale [expr {abs($px1) + abs($py1) + abs($pz1) + abs($px2) + abs($py2) + abs($pz2)}]
+    dict set m bound [list $kc $x1 $y1 $z1 $px1 $py1 $pz1 $x2 $y2 $z2 $px2 $py2 $pz2 $rh \
+        [expr {sqrt($x1 * $x1 + $y1 * $y1)}] $scale]
     return $m
 }
 
@@ -379,6 +392,122 @@ proc ::fivax::kin::interpolationError {model j0 j1 P0 P1 t0 t1 {tol Inf} {atol I
         if {$dp > $tol || $dg > $atol} break
     }
     list $dp $dg
+}
+
+# ::fivax::kin::interpolationBound --
+#	Returns {bp ba}: upper bounds of what interpolationError measures for
+#	the same move (tip distance from the segment P0-P1, mm; axis angle
+#	from the great-circle arc t0-t1, rad), from the two ends alone and
+#	without forward kinematics, given that the tip and the unit axis at
+#	j0 and at j1 lie within ep (mm) and ea (chord length) of P0, t0 and
+#	P1, t1. A move whose bounds are within a tolerance needs no
+#	quarter-point check: the check could not find more.
+#
+#	Derivation (kinematics.md sections 2 and 7). The controller moves the
+#	joints linearly, j(s) = j0 + s (j1 - j0), s in [0, 1]: each angle at
+#	the rate w_i = |dq_i| (rad), the linear axes by the constant vector
+#	V = dXYZ. A C2 curve c(s) stays within max|c''|/8 of the chord of its
+#	ends (the error of linear interpolation, s(1 - s)/2 max|c''|, also
+#	for vectors: write it with the Green function of d2/ds2). A point
+#	turned about the unit axis u at the rate w through p, y = R(u) x + p,
+#	has y' = R (w u x x + x') and
+#	    y'' = R (w^2 u x (u x x) + 2 w u x x' + x''),
+#	so |y''| <= w^2 r + 2 w |u x x'| + |x''|, r = |u x x| its distance
+#	from the axis. Along the chain of section 2:
+#	  head-head    tip = XYZ + R2 g + p2, g = R1 (-p1) + p1 - p2: XYZ adds
+#	               nothing to c''; the zero-pose tip turns at distance
+#	               r1 = |u1 x p1| about axis 1 and g at r2 about axis 2:
+#	               |c''| <= w1^2 r1 + 2 w1 w2 r1 + w2^2 r2
+#	  head-table   tip = R2 g + p2, g = XYZ + R1 (-p1) + p1 - p2, g' = V +
+#	               w1 u1 x R1 (-p1): the extra term 2 w2 |u2 x V|
+#	  table-table  tip = R2 h + p2, h = R1 (XYZ - p1) + p1 - p2, |h'| <=
+#	               w1 r1 + |V|, |h''| <= w1^2 r1 + 2 w1 |u1 x V|: the
+#	               extra terms 2 w2 |V| + 2 w1 |u1 x V|
+#	With R = max(r1, r2) and w = w1 + w2 this is R w^2 plus 2 w |V| at
+#	most where linear axes ride on table axes. The radii are bounded over
+#	the move from their ends: r1 = |u1 x (XYZ - p1)| on a table-table
+#	machine is convex in s (the point moves on a line), so at most its
+#	larger end; r2 changes no faster than the point it measures moves
+#	(speed S: w1 r1 on heads, plus |V| where XYZ rides on axis 2), so
+#	min(r2(0) + s S, r2(1) + (1 - s) S) <= (r2(0) + r2(1) + S)/2. The
+#	ends' r2 come from P0, P1 (the turned point is tip - XYZ - p2 on a
+#	head-head machine, tip - p2 otherwise), plus ep.
+#	The axis t(s) = R2 R1 Z (relation (O) of kin.tcl) has in the same way
+#	|t''| <= w1^2 k1 + 2 w1 w2 k1 + w2^2 k2 <= w^2, k1 = |u1 x Z| and k2
+#	<= (|u2 x t0| + |u2 x t1| + 2 ea + w1 k1)/2.
+#	Against the reference ends: the straight point (1 - s) P0 + s P1 of
+#	the segment is within ep of the chord, so the tip is within
+#	|c''|/8 + ep of the segment; the axis t(s) is within e = |t''|/8 + ea
+#	of the chord point m = (1 - s) t0 + s t1, whose direction lies on the
+#	arc, so its angle from the arc is at most asin(e) (the ball of radius
+#	e about a unit vector subtends that angle). Margins cover rounding:
+#	1e-9 of the coordinates' size for the tip, and 1e-10 rad plus ten
+#	times the error of the arc's normal (about 1e-15/|t0 x t1|, where
+#	interpolationError measures against the arc) for the axis.
+#	ba is Inf when e reaches 1.
+proc ::fivax::kin::interpolationBound {model j0 j1 P0 P1 t0 t1 ep ea} {
+    lassign $j0 X0 Y0 Z0 a0 b0
+    lassign $j1 X1 Y1 Z1 a1 b1
+    lassign [dict get $model bound] kc ux1 uy1 uz1 px1 py1 pz1 ux2 uy2 uz2 px2 py2 pz2 \
+        rh k1 scale
+    lassign $P0 x0 y0 z0
+    lassign $P1 x1 y1 z1
+    set w1 [expr {abs($a1 - $a0)}]
+    set w2 [expr {abs($b1 - $b0)}]
+    set vx [expr {$X1 - $X0}]
+    set vy [expr {$Y1 - $Y0}]
+    set vz [expr {$Z1 - $Z0}]
+    # the points axis 2 turns, relative to p2, at the ends
+    if {$kc == 0} {
+        set ex [expr {$x0 - $X0 - $px2}]; set ey [expr {$y0 - $Y0 - $py2}]; set ez [expr {$z0 - $Z0 - $pz2}]
+        set fx [expr {$x1 - $X1 - $px2}]; set fy [expr {$y1 - $Y1 - $py2}]; set fz [expr {$z1 - $Z1 - $pz2}]
+    } else {
+        set ex [expr {$x0 - $px2}]; set ey [expr {$y0 - $py2}]; set ez [expr {$z0 - $pz2}]
+        set fx [expr {$x1 - $px2}]; set fy [expr {$y1 - $py2}]; set fz [expr {$z1 - $pz2}]
+    }
+    set r2 [expr {sqrt(($uy2 * $ez - $uz2 * $ey) ** 2 + ($uz2 * $ex - $ux2 * $ez) ** 2
+        + ($ux2 * $ey - $uy2 * $ex) ** 2) + sqrt(($uy2 * $fz - $uz2 * $fy) ** 2
+        + ($uz2 * $fx - $ux2 * $fz) ** 2 + ($ux2 * $fy - $uy2 * $fx) ** 2) + 2.0 * $ep}]
+    if {$kc == 0} {
+        set r1 $rh
+        set r2 [expr {0.5 * ($r2 + $w1 * $r1)}]
+        set lin 0.0
+    } else {
+        set v [expr {sqrt($vx * $vx + $vy * $vy + $vz * $vz)}]
+        if {$kc == 1} {
+            set r1 $rh
+            set lin [expr {2.0 * $w2 * sqrt(($uy2 * $vz - $uz2 * $vy) ** 2
+                + ($uz2 * $vx - $ux2 * $vz) ** 2 + ($ux2 * $vy - $uy2 * $vx) ** 2)}]
+        } else {
+            set ex [expr {$X0 - $px1}]; set ey [expr {$Y0 - $py1}]; set ez [expr {$Z0 - $pz1}]
+            set fx [expr {$X1 - $px1}]; set fy [expr {$Y1 - $py1}]; set fz [expr {$Z1 - $pz1}]
+            set r1 [expr {sqrt(($uy1 * $ez - $uz1 * $ey) ** 2 + ($uz1 * $ex - $ux1 * $ez) ** 2
+                + ($ux1 * $ey - $uy1 * $ex) ** 2)}]
+            set r [expr {sqrt(($uy1 * $fz - $uz1 * $fy) ** 2 + ($uz1 * $fx - $ux1 * $fz) ** 2
+                + ($ux1 * $fy - $uy1 * $fx) ** 2)}]
+            if {$r > $r1} {set r1 $r}
+            set lin [expr {2.0 * $w2 * $v + 2.0 * $w1 * sqrt(($uy1 * $vz - $uz1 * $vy) ** 2
+                + ($uz1 * $vx - $ux1 * $vz) ** 2 + ($ux1 * $vy - $uy1 * $vx) ** 2)}]
+        }
+        set r2 [expr {0.5 * ($r2 + $w1 * $r1 + $v)}]
+    }
+    set size [expr {$scale + abs($X0) + abs($Y0) + abs($Z0) + abs($X1) + abs($Y1) + abs($Z1)
+        + abs($x0) + abs($y0) + abs($z0) + abs($x1) + abs($y1) + abs($z1)}]
+    set bp [expr {($w1 * ($w1 + 2.0 * $w2) * $r1 + $w2 * $w2 * $r2 + $lin) / 8.0 + $ep
+        + 1e-9 * (1.0 + $size)}]
+    # the axis: k2 from |u2 x t| at the ends
+    lassign $t0 ax ay az
+    lassign $t1 bx by bz
+    set k2 [expr {0.5 * (sqrt(($uy2 * $az - $uz2 * $ay) ** 2 + ($uz2 * $ax - $ux2 * $az) ** 2
+        + ($ux2 * $ay - $uy2 * $ax) ** 2) + sqrt(($uy2 * $bz - $uz2 * $by) ** 2
+        + ($uz2 * $bx - $ux2 * $bz) ** 2 + ($ux2 * $by - $uy2 * $bx) ** 2)
+        + 2.0 * $ea + $w1 * $k1)}]
+    set e [expr {($w1 * ($w1 + 2.0 * $w2) * $k1 + $w2 * $w2 * $k2) / 8.0 + $ea}]
+    if {$e >= 1.0} {return [list $bp Inf]}
+    set nl [expr {sqrt(($ay * $bz - $az * $by) ** 2 + ($az * $bx - $ax * $bz) ** 2
+        + ($ax * $by - $ay * $bx) ** 2)}]
+    set ba [expr {asin($e) + 1e-10 + ($nl > 5e-13 ? 1e-14 / $nl : 0.0)}]
+    list $bp $ba
 }
 
 # ::fivax::kin::Wrap -- Returns angle a (radians) wrapped into (-pi, pi], never -0.0.

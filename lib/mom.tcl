@@ -43,6 +43,31 @@ namespace eval ::fivax::mom {
         {-globals any {} DICT "globals set in the post interpreter before the post is sourced"}
         {-autopath any {} LIST "package path of the post interpreter"}
     }
+    # What the runtime does in the post interpreter, in one crossing per
+    # record (see Runtime Flush): a flat list of operations {op name
+    # value}: v sets the global name, a sets the global array name from
+    # the pairs value, e fires MOM_name (MOM_abort_event leaves the
+    # handler quietly). The event being fired is the variable event of
+    # the post interpreter's namespace ::fivax::mom::runtime (for
+    # MOM_ask_event_type).
+    variable dispatch {{ops} {
+        variable event
+        set saved $event
+        try {
+            foreach {op name value} $ops {
+                switch -- $op {
+                    v {set ::$name $value}
+                    a {array set ::$name $value}
+                    e {
+                        set event $name
+                        try {::MOM_$name} trap {FIVAX MOM ABORT_EVENT} {} {}
+                    }
+                }
+            }
+        } finally {
+            set event $saved
+        }
+    } ::fivax::mom::runtime}
     # MOM_* commands with behaviour (implemented by Cmd<name> below).
     variable commands {
         MOM_output_literal MOM_output_text MOM_do_template MOM_force
@@ -219,13 +244,15 @@ oo::class create ::fivax::mom::Runtime {
     constructor {opts} {
         dict for {opt value} $opts {set S([string range $opt 1 end]) $value}
         array set S {
-            event "" records 0 blocks 0 warnings 0 events 0 pathOpen 0
+            ops {} records 0 blocks 0 warnings 0 events 0 pathOpen 0
             headerPending 0 rapid 0 circle {} cycle {} axis {0.0 0.0 1.0}
             point {} tool {} toolKey {} prevToolKey {} toolChanged 0 firstMove 1
             toolNames {} handlers {} msysPending 0 unknown {} udes {}
             scale 1.0 clUnit MM outUnit MM unitsSeen 0 firstUnit MM nurbs {}
         }
         set S(nc) [::fivax::nc::create -sequence 0]
+        # the NC text goes out in large writes
+        if {$S(channel) ne ""} {chan configure $S(channel) -buffering full -buffersize 1048576}
         if {$S(def) ne ""} {
             set S(defDict) [::fivax::def::load $S(def)]
             ::fivax::def::configure $S(nc) $S(defDict)
@@ -234,6 +261,7 @@ oo::class create ::fivax::mom::Runtime {
         }
         set S(interp) [interp create]
         set child $S(interp)
+        $child eval {namespace eval ::fivax::mom::runtime {variable event ""}}
         if {[llength $S(autopath)]} {
             $child eval [list set ::auto_path $S(autopath)]
         }
@@ -263,8 +291,9 @@ oo::class create ::fivax::mom::Runtime {
         if {[info exists S(nc)]} {$S(nc) destroy}
     }
 
-    # interp -- Returns the post interpreter.
+    # interp -- Returns the post interpreter (the globals set so far in it).
     method interp {} {
+        my Flush
         return $S(interp)
     }
 
@@ -321,40 +350,53 @@ oo::class create ::fivax::mom::Runtime {
         my UnknownTotals
     }
 
-    # Globals -- Sets the globals of a flat name/value list in the post interp.
+    # Globals -- Sets the globals of a flat name/value list in the post interp (see Flush).
     method Globals {pairs} {
         foreach {name value} $pairs {
-            $S(interp) eval [list set ::$name $value]
+            lappend S(ops) v $name $value
         }
     }
 
-    # Array -- Sets global array name(0..n-1) from the list values.
+    # Array -- Sets global array name(0..n-1) from the list values (see Flush).
     method Array {name values} {
         set pairs {}
         set i 0
         foreach v $values {lappend pairs $i $v; incr i}
-        $S(interp) eval [list array set ::$name $pairs]
+        lappend S(ops) a $name $pairs
     }
 
     # Fire --
-    #	Calls MOM_<event> in the post if the post defines it (as NX does);
-    #	MOM_abort_event leaves the handler quietly. Returns 1 if a handler ran.
-    method Fire {event} {
+    #	Calls MOM_<event> in the post if the post defines it (as NX does),
+    #	after the globals set before it; MOM_abort_event leaves the handler
+    #	quietly. With now 0 the call waits for the next Fire or Flush (the
+    #	handlers of one record run in one crossing). Returns 1 if the post
+    #	has the handler.
+    method Fire {event {now 1}} {
         set proc MOM_$event
-        if {![dict exists $S(handlers) $proc]} {
-            dict set S(handlers) $proc [llength [$S(interp) eval [list info commands ::$proc]]]
+        if {![dict exists $S(handlers) $proc]} {my Has $proc}
+        set has [dict get $S(handlers) $proc]
+        if {$has} {
+            incr S(events)
+            lappend S(ops) e $event {}
         }
-        if {![dict get $S(handlers) $proc]} {return 0}
-        set previous $S(event)
-        set S(event) $event
-        incr S(events)
-        try {
-            $S(interp) eval [list $proc]
-        } trap {FIVAX MOM ABORT_EVENT} {} {
-        } finally {
-            set S(event) $previous
-        }
-        return 1
+        if {$now} {my Flush}
+        return $has
+    }
+
+    # Flush --
+    #	Does the waiting operations (globals, arrays, handlers) in the post
+    #	interpreter, in order, in one call (the dispatch lambda).
+    method Flush {} {
+        if {![llength $S(ops)]} return
+        set ops $S(ops)
+        set S(ops) {}
+        $S(interp) eval [list apply $::fivax::mom::dispatch $ops]
+    }
+
+    # Child -- Returns the result of script in the post interpreter, the waiting operations done first.
+    method Child {script} {
+        my Flush
+        $S(interp) eval $script
     }
 
     # Listing -- Passes one line to the listing command, if any.
@@ -366,7 +408,7 @@ oo::class create ::fivax::mom::Runtime {
     method Record {rec} {
         namespace upvar ::fivax::mom headerKinds headerKinds
         set kind [dict get $rec kind]
-        my Globals [list mom_cl_line [dict get $rec line]]
+        lappend S(ops) v mom_cl_line [dict get $rec line]
         if {$S(headerPending) && $kind ni $headerKinds} {my FlushHeader}
         if {$S(scale) != 1.0} {set rec [my Scale $rec]}
         if {[llength $S(nurbs)] && $kind ni {KNOT CNTRL}} {my Nurbs}
@@ -488,7 +530,7 @@ oo::class create ::fivax::mom::Runtime {
             if {$S(headerPending)} {my FlushHeader}
             return
         }
-        my Globals [list mom_path_name [$S(interp) eval {set ::mom_part_name}]]
+        my Globals [list mom_path_name [my Child {set ::mom_part_name}]]
         set S(headerPending) 1
         my FlushHeader
     }
@@ -503,7 +545,6 @@ oo::class create ::fivax::mom::Runtime {
         set S(pathOpen) 1
         set S(firstMove) 1
         set S(toolChanged) 0
-        set child $S(interp)
         # no TOOL PATH nor LOAD yet (an implicit operation): no tool to change to
         set toolKnown [expr {$S(toolKey) ne ""}]
         if {$toolKnown && ![info exists S(toolNumbered)]} {
@@ -517,7 +558,7 @@ oo::class create ::fivax::mom::Runtime {
         }
         foreach {var default} {mom_tool_length 0.0 mom_tool_diameter 0.0
             mom_tool_corner1_radius 0.0 mom_tool_name ""} {
-            if {![$child eval [list info exists ::$var]]} {
+            if {![my Child [list info exists ::$var]]} {
                 my Globals [list $var $default]
             }
         }
@@ -537,7 +578,7 @@ oo::class create ::fivax::mom::Runtime {
     #	the tool differs from the last one, nothing otherwise (tools come
     #	from the CL only: TOOL PATH, LOAD, LOADTL).
     method ToolChange {} {
-        set key [list [$S(interp) eval {set ::mom_tool_number}] $S(toolKey)]
+        set key [list [my Child {set ::mom_tool_number}] $S(toolKey)]
         if {$key eq $S(prevToolKey)} return
         set first [expr {$S(prevToolKey) eq ""}]
         set S(prevToolKey) $key
@@ -580,7 +621,7 @@ oo::class create ::fivax::mom::Runtime {
         my Globals [list mom_feed_rate_mode $mode mom_programmed_feed_rate $value \
             mom_feed_cut_value $value]
         if {$mode in {MMPR IPR}} {
-            set rpm [$S(interp) eval {expr {[info exists ::mom_spindle_speed] ? $::mom_spindle_speed : 0.0}}]
+            set rpm [my Child {expr {[info exists ::mom_spindle_speed] ? $::mom_spindle_speed : 0.0}}]
             my Globals [list mom_feed_rate_per_rev $value mom_feed_rate [expr {$value * $rpm}]]
         } else {
             my Globals [list mom_feed_rate $value]
@@ -593,7 +634,7 @@ oo::class create ::fivax::mom::Runtime {
     #	cycle hole), each preceded by MOM_before_motion; the first motion of
     #	a path goes out through MOM_initial_move / MOM_first_move.
     method Motion {rec} {
-        my EnsurePath
+        if {!$S(pathOpen) || $S(headerPending)} {my EnsurePath}
         if {[llength [dict get $rec axis]]} {set S(axis) [dict get $rec axis]}
         set point [dict get $rec point]
         if {[llength $S(cycle)]} {
@@ -623,8 +664,8 @@ oo::class create ::fivax::mom::Runtime {
         if {![info exists S(feed)]} {
             ::fivax::Fail MOM FEED "[::fivax::mom::Where $rec]: GOTO: feed move before any FEDRAT"
         }
-        my Globals [list mom_motion_type CUT mom_programmed_feed_rate $S(feed) \
-            mom_feed_rate $S(feed)]
+        lappend S(ops) v mom_motion_type CUT v mom_programmed_feed_rate $S(feed) \
+            v mom_feed_rate $S(feed)
     }
 
     # Move --
@@ -634,32 +675,34 @@ oo::class create ::fivax::mom::Runtime {
     #	to that name (as NX does, inferred from Post Builder's posts, which
     #	choose rapid or feed there from mom_programmed_feed_rate).
     method Move {event} {
-        my Globals [list mom_motion_event $event]
-        my Fire before_motion
+        lappend S(ops) v mom_motion_event $event
+        my Fire before_motion 0
         if {$S(firstMove)} {
             set S(firstMove) 0
             set event [expr {$S(toolChanged) ? "initial_move" : "first_move"}]
-            my Globals [list mom_motion_event $event]
+            lappend S(ops) v mom_motion_event $event
         }
         my Fire $event
     }
 
     # SetPosition --
-    #	Sets mom_mcs_goto, mom_tool_axis and their mom_prev_* copies.
+    #	Sets mom_mcs_goto, mom_tool_axis (3-vectors) and their mom_prev_*
+    #	copies (the array pairs of the last position are kept for them).
     #	mom_pos mirrors mom_mcs_goto: the replay runtime does no kinematics.
     method SetPosition {point axis} {
+        lassign $point x y z
+        lassign $axis i j k
+        set p [list 0 $x 1 $y 2 $z]
+        set a [list 0 $i 1 $j 2 $k]
         if {$S(point) ne ""} {
-            my Array mom_prev_mcs_goto $S(point)
-            my Array mom_prev_tool_axis $S(prevAxis)
+            lappend S(ops) a mom_prev_mcs_goto $S(pointPairs) a mom_prev_tool_axis $S(axisPairs)
         } else {
-            my Array mom_prev_mcs_goto $point
-            my Array mom_prev_tool_axis $axis
+            lappend S(ops) a mom_prev_mcs_goto $p a mom_prev_tool_axis $a
         }
         set S(point) $point
-        set S(prevAxis) $axis
-        my Array mom_mcs_goto $point
-        my Array mom_tool_axis $axis
-        my Array mom_pos $point
+        set S(pointPairs) $p
+        set S(axisPairs) $a
+        lappend S(ops) a mom_mcs_goto $p a mom_tool_axis $a a mom_pos $p
     }
 
     # Arc --
@@ -777,7 +820,7 @@ oo::class create ::fivax::mom::Runtime {
             foreach j {0 1 2} c $p {lappend pairs $i,$j $c}
             incr i
         }
-        $S(interp) eval [list array set ::mom_nurbs_points $pairs]
+        lappend S(ops) a mom_nurbs_points $pairs
         my SetPosition [lindex $points end] $S(axis)
         my Move nurbs_move
     }
@@ -800,8 +843,8 @@ oo::class create ::fivax::mom::Runtime {
 
     # PostVar -- Returns the post's global name, or default when it is not set.
     method PostVar {name default} {
-        if {[$S(interp) eval [list info exists ::$name]]} {
-            return [$S(interp) eval [list set ::$name]]
+        if {[my Child [list info exists ::$name]]} {
+            return [my Child [list set ::$name]]
         }
         return $default
     }
@@ -820,7 +863,7 @@ oo::class create ::fivax::mom::Runtime {
             my SetPosition [dict get $rec point] $S(axis)
             my Globals [list mom_motion_type GOHOME mom_motion_event gohome_move \
                 mom_programmed_feed_rate 0]
-            my Fire before_motion
+            my Fire before_motion 0
             my Fire gohome_move
         }
         set S(rapid) 0
@@ -949,7 +992,7 @@ oo::class create ::fivax::mom::Runtime {
         my SetPosition $point $S(axis)
         set event [dict get $S(cycle) event]_move
         my Globals [list mom_motion_event $event]
-        my Fire before_motion
+        my Fire before_motion 0
         if {![my Fire $event]} {
             ::fivax::Fail MOM CYCLE "[::fivax::mom::Where $rec]: the post has no MOM_$event:\
                 the holes of this cycle cannot be output"
@@ -1117,7 +1160,7 @@ oo::class create ::fivax::mom::Runtime {
 
     # MOM_ask_event_type: name of the current event.
     method Cmd_ask_event_type {} {
-        return $S(event)
+        $S(interp) eval {set ::fivax::mom::runtime::event}
     }
 
     # MOM_ask_env_var name: value of an environment variable, or "".

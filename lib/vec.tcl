@@ -3,7 +3,7 @@
 #	through the origin (Rodrigues' formula). Angles in radians.
 
 namespace eval ::fivax::vec {
-    namespace export add sub scale dot cross norm unit rotate angle lerp slerp
+    namespace export add sub scale dot cross norm dist unit rotate angle lerp slerp
     namespace ensemble create -prefixes 0
     namespace upvar ::fivax::num pi pi
 }
@@ -49,6 +49,16 @@ proc ::fivax::vec::norm {a} {
     expr {sqrt($ax * $ax + $ay * $ay + $az * $az)}
 }
 
+# ::fivax::vec::dist -- Returns |a - b| (the same number as [norm [sub a b]]).
+proc ::fivax::vec::dist {a b} {
+    lassign $a ax ay az
+    lassign $b bx by bz
+    set x [expr {$ax - $bx}]
+    set y [expr {$ay - $by}]
+    set z [expr {$az - $bz}]
+    expr {sqrt($x * $x + $y * $y + $z * $z)}
+}
+
 # ::fivax::vec::unit -- Returns a / |a|; errors {FIVAX VEC ZERO} on a zero vector.
 proc ::fivax::vec::unit {a} {
     lassign $a ax ay az
@@ -74,7 +84,13 @@ proc ::fivax::vec::rotate {u a v} {
 # ::fivax::vec::angle --
 #	Returns the angle (radians, 0..pi) between a and b, accurate near 0 and pi.
 proc ::fivax::vec::angle {a b} {
-    expr {atan2([norm [cross $a $b]], [dot $a $b])}
+    # atan2(|a x b|, a . b), written out (the same numbers as norm, cross, dot)
+    lassign $a ax ay az
+    lassign $b bx by bz
+    set x [expr {$ay * $bz - $az * $by}]
+    set y [expr {$az * $bx - $ax * $bz}]
+    set z [expr {$ax * $by - $ay * $bx}]
+    expr {atan2(sqrt($x * $x + $y * $y + $z * $z), $ax * $bx + $ay * $by + $az * $bz)}
 }
 
 # ::fivax::vec::lerp -- Returns a + s (b - a).

@@ -124,6 +124,16 @@ proc ::fivax::verify::RadiusCentre {start end r plane dir} {
         [::fivax::vec::scale $d $left]
 }
 
+# ::fivax::verify::LineRe --
+#	Returns the regexp of a line of words of pattern re separated by
+#	single spaces when re is one bracket expression then another one
+#	repeated with + ({[A-Z][-+.0-9]+}), neither with a space (so that
+#	such a line split at its spaces gives the words re finds); else "".
+proc ::fivax::verify::LineRe {re} {
+    if {![regexp {^\[[^]\\^[ ]+\]\[[^]\\^[ ]+\]\+$} $re]} {return ""}
+    return "^${re}( ${re})*\$"
+}
+
 oo::class create ::fivax::verify::Checker {
     # S: machine, tableOffset, dialect (its table entry), names, rollover,
     # limits, model, the modal state X Y Z q1 q2 motion (0/1) mode
@@ -138,6 +148,7 @@ oo::class create ::fivax::verify::Checker {
         if {$name eq ""} {set name [dict get $machine controller]}
         if {![dict exists $::fivax::verify::Dialects $name]} {set name fanuc}
         set S(dialect) [dict get $::fivax::verify::Dialects $name]
+        set S(lineRe) [::fivax::verify::LineRe [dict get $S(dialect) word]]
         set chain [dict get $machine chain]
         set S(names) [lmap axis $chain {dict get $axis name}]
         set S(tcpCodes) [dict get $machine tcp_codes]
@@ -208,16 +219,23 @@ oo::class create ::fivax::verify::Checker {
         set out [dict create block 0 motion $S(motion) moved {} joints {} pose {} \
             space [my Space] arc {} mode $S(mode) F "" feed $S(F) words {} comments $comments \
             limit {} unknown {} hole 0]
-        if {[string trim $text] eq "" || [regexp -- [dict get $S(dialect) skip] $line]} {
+        # a line of plain words (every block fivax writes) is split at its spaces
+        set plain [expr {$S(lineRe) ne "" && [regexp -- $S(lineRe) $text]}]
+        if {(!$plain && [string trim $text] eq "") || [regexp -- [dict get $S(dialect) skip] $line]} {
             dict set out joints [my Joints]
             dict set out pose [my Pose]
             return $out
         }
         dict set out block 1
-        set words [regexp -all -inline -- [dict get $S(dialect) word] $text]
-        set rest [string trim [regsub -all -- [dict get $S(dialect) word] $text ""]]
         set unknown {}
-        if {$rest ne ""} {lappend unknown text $rest}
+        if {$plain} {
+            set words [split $text " "]
+        } else {
+            set re [dict get $S(dialect) word]
+            set words [regexp -all -inline -- $re $text]
+            set rest [string trim [regsub -all -- $re $text ""]]
+            if {$rest ne ""} {lappend unknown text $rest}
+        }
         set pairs {}
         set moved {}
         set limit {}
@@ -225,8 +243,7 @@ oo::class create ::fivax::verify::Checker {
         set machineFrame 0
         set planeSet 0
         set dwell 0
-        foreach word $words {
-            if {[string index $word 0] ne "G"} continue
+        foreach word [lsearch -all -inline -glob $words G*] {
             set value [string range $word 1 end]
             if {![string is double -strict $value]} continue
             set g [expr {$value == round($value) ? int($value) : $value}]
@@ -258,36 +275,36 @@ oo::class create ::fivax::verify::Checker {
         set centreGiven 0
         foreach word $words {
             set letter [string index $word 0]
-            set value [string range $word 1 end]
-            if {![string is double -strict $value]} {
+            set x [string range $word 1 end]
+            if {![string is double -strict $x]} {
                 lappend unknown text $word
                 continue
             }
-            lappend pairs $letter $value
+            lappend pairs $letter $x
             if {$letter in {X Y Z}} {
                 if {$machineFrame} {
                     set S($letter) ""
                 } elseif {$S(cycle) && $letter eq "Z"} {
                     # in a canned cycle Z is the hole's bottom
-                    set S(bottom) $value
+                    set S(bottom) $x
                 } else {
-                    set S($letter) $value
+                    set S($letter) $x
                 }
                 if {$S(cycle)} {set hole 1}
                 lappend moved $letter
             } elseif {$letter eq "R" && $S(cycle)} {
-                set S(R) $value
+                set S(R) $x
                 set hole 1
             } elseif {$letter eq "Q" && $S(cycle)} {
                 # the peck depth: the hole ends at its bottom all the same
             } elseif {$letter in {I J K} && $S(motion) in {2 3}} {
-                dict set ijk $letter $value
+                dict set ijk $letter $x
                 set centreGiven 1
             } elseif {$letter eq "R" && $S(motion) in {2 3}} {
-                set radius $value
+                set radius $x
                 set centreGiven 1
             } elseif {[set i [lsearch -exact $S(names) $letter]] >= 0} {
-                set q [::fivax::num::rad $value]
+                set q [::fivax::num::rad $x]
                 lassign [lindex $S(limits) $i] min max
                 if {$q < $min - 1e-9 || $q > $max + 1e-9} {
                     incr S(limitViolations)
@@ -296,7 +313,7 @@ oo::class create ::fivax::verify::Checker {
                 set S(q[expr {$i + 1}]) $q
                 lappend moved $letter
             } elseif {$letter eq "G"} {
-                set g [expr {$value == round($value) ? int($value) : $value}]
+                set g [expr {$x == round($x) ? int($x) : $x}]
                 switch -exact -- $g {
                     0 {set S(motion) 0}
                     1 {set S(motion) 1}
@@ -314,11 +331,11 @@ oo::class create ::fivax::verify::Checker {
             } elseif {$letter eq "F"} {
                 # (G4 F: a Sinumerik dwell time, no feed)
                 if {!$dwell} {
-                    set S(F) $value
-                    dict set out F $value
+                    set S(F) $x
+                    dict set out F $x
                 }
             } elseif {$letter eq "M" && [llength $S(tcpCodes)]
-                    && [set k [lsearch -exact $S(tcpCodes) [expr {int($value)}]]] >= 0} {
+                    && [set k [lsearch -exact $S(tcpCodes) [expr {int($x)}]]] >= 0} {
                 set S(tcp) [expr {$k == 0}]
             } elseif {$letter ni $::fivax::verify::KnownLetters} {
                 lappend unknown "letter $letter" $word
@@ -549,7 +566,7 @@ oo::class create ::fivax::verify::Checker {
     # axis at joints from tip P and unit axis t.
     method deviation {joints P t} {
         lassign [::fivax::kin::forward $S(model) $joints] Pm tm
-        list [::fivax::vec::norm [::fivax::vec::sub $Pm $P]] \
+        list [::fivax::vec::dist $Pm $P] \
             [::fivax::num::deg [::fivax::vec::angle $tm $t]]
     }
 
@@ -559,6 +576,14 @@ oo::class create ::fivax::verify::Checker {
     # interpolation from j0 to j1; a rotary that rolls over turns the
     # shortest way.
     method interior {j0 j1 P0 P1 t0 t1} {
+        lassign [::fivax::kin::interpolationError $S(model) $j0 [my Rolled $j0 $j1] \
+            $P0 $P1 $t0 $t1] dp da
+        list $dp [::fivax::num::deg $da]
+    }
+
+    # Returns joints j1 with each rotary that rolls over moved to the
+    # value nearest its value in j0 (the way the controller turns it).
+    method Rolled {j0 j1} {
         namespace upvar ::fivax::num pi pi
         foreach i {3 4} roll $S(rollover) {
             if {$roll} {
@@ -567,8 +592,7 @@ oo::class create ::fivax::verify::Checker {
                 lset j1 $i [expr {$a + $d - 2.0 * $pi * round($d / (2.0 * $pi))}]
             }
         }
-        lassign [::fivax::kin::interpolationError $S(model) $j0 $j1 $P0 $P1 $t0 $t1] dp da
-        list $dp [::fivax::num::deg $da]
+        return $j1
     }
 
     # Reads the NC line (the post's own block) and, when move (a motion
@@ -576,7 +600,11 @@ oo::class create ::fivax::verify::Checker {
     # the block's pose at its end and, for joint-space cutting moves (the
     # control interpolates the joints linearly), inside the block. In TCP
     # mode and in a work plane the control keeps the tip on the line (or
-    # arc) itself: the end is what is checked.
+    # arc) itself: the end is what is checked. Inside the block the
+    # quarter points are measured unless kin interpolationBound, from the
+    # same written values and the errors at both ends, proves that they
+    # cannot exceed the largest deviation found so far (which is all the
+    # summary keeps).
     method block {line move} {
         set blk [my read $line]
         set P [dict get $move P]
@@ -587,8 +615,9 @@ oo::class create ::fivax::verify::Checker {
         }
         set t [dict get $move t]
         lassign $pose Pm tm
-        set dp [::fivax::vec::norm [::fivax::vec::sub $Pm $P]]
-        set da [::fivax::num::deg [::fivax::vec::angle $tm $t]]
+        set dp [::fivax::vec::dist $Pm $P]
+        set angle [::fivax::vec::angle $tm $t]
+        set da [::fivax::num::deg $angle]
         incr S(checked)
         if {$dp > $S(maxPos)} {set S(maxPos) $dp; set S(worst) [dict get $move src]}
         if {$da > $S(maxAng)} {set S(maxAng) $da}
@@ -597,14 +626,21 @@ oo::class create ::fivax::verify::Checker {
             set S(prev) {}
             return
         }
+        # the axis error as a chord (at most the angle), with a rounding margin
+        set ea [expr {$angle + 1e-12}]
         if {[dict get $move kind] eq "feed" && $S(prev) ne ""} {
-            lassign $S(prev) j0 P0 t0
+            lassign $S(prev) j0 P0 t0 ep0 ea0
             incr S(segments)
-            lassign [my interior $j0 $joints $P0 $P $t0 $t] dp da
-            if {$dp > $S(maxMidPos)} {set S(maxMidPos) $dp; set S(worstMid) [dict get $move src]}
-            if {$da > $S(maxMidAng)} {set S(maxMidAng) $da}
+            set j1 [my Rolled $j0 $joints]
+            lassign [::fivax::kin::interpolationBound $S(model) $j0 $j1 $P0 $P $t0 $t \
+                [expr {max($ep0, $dp)}] [expr {max($ea0, $ea)}]] bp ba
+            if {$bp > $S(maxMidPos) || [::fivax::num::deg $ba] > $S(maxMidAng)} {
+                lassign [my interior $j0 $joints $P0 $P $t0 $t] dp2 da2
+                if {$dp2 > $S(maxMidPos)} {set S(maxMidPos) $dp2; set S(worstMid) [dict get $move src]}
+                if {$da2 > $S(maxMidAng)} {set S(maxMidAng) $da2}
+            }
         }
-        set S(prev) [list $joints $P $t]
+        set S(prev) [list $joints $P $t $dp $ea]
     }
 
     # Returns a dict: checked (CL points), segments, maxPos (mm), maxAng

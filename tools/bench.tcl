@@ -1,178 +1,194 @@
 # bench.tcl --
-#	Measures the cost of the rotary optimisation and the linearisation on
-#	a large synthetic CL file and prints the figures next to a stored
-#	baseline of our own earlier figures (tools/bench-baseline.txt). The
-#	file (a zig-zag raster over the example surface, lib/toolpath.tcl) is
-#	generated into a temporary directory and deleted afterwards.
+#	End-to-end speed of tools/replay.tcl on generated 5-axis CL files of
+#	several sizes, beside a minimal loop of ours that does the least any
+#	post must: read each GOTO, solve the inverse kinematics, write a
+#	block. Each run is a child process; the table gives CL records per
+#	second, wall time and peak resident memory (VmHWM).
 #
-#	tclsh tools/bench.tcl ?-points 200000? ?-machine FILE? ?-noreplay? ?-save?
+#	tclsh tools/bench.tcl ?-sizes "50000 200000 1000000"? ?-machine FILE?
 #
-#	Rows, in microseconds per CL point (GOTO), each including the reading:
-#	  read       the CLSF reader alone
-#	  greedy     reader + planner, -rotary greedy -tol 0
-#	  optimal    reader + planner, -rotary optimal -tol 0
-#	  optimal+lin  reader + planner, -rotary optimal -tol 0.01 (the default)
-#	  replay     tools/replay.tcl end to end (post, NC writer, verification)
-#	No timing is asserted anywhere: the figures are for reading.
+#	Rows per size:
+#	  replay     tools/replay.tcl with the default settings
+#	  -tol 0, no check   linearisation off (-tol 0) and the block check
+#	             left out (the checker's block method replaced by a no-op
+#	             in the post interpreter: a bench-only measure, no option)
+#	  minimal    the minimal loop (::bench::Loop): scan, kin orientations
+#	             and position (first solution), format, write
+#	The file is a zig-zag raster over the example surface
+#	(tools/lib/toolpath.tcl), 1000 points a pass, at most 200 passes
+#	(generated once), repeated to the size. Nothing is asserted: the
+#	figures are for reading, and make test times nothing.
+#
+#	Two internal modes run the child processes:
+#	  tclsh tools/bench.tcl -loop MACHINE CL OUT
+#	  tclsh tools/bench.tcl -nocheck ?replay options? CL
 
 package require Tcl 8.6
 
 set root [file dirname [file dirname [file normalize [info script]]]]
 set auto_path [linsert $auto_path 0 [file join $root lib]]
 package require fivax 0.1
-source [file join $root tools lib toolpath.tcl]
 
 namespace eval ::bench {
     variable options {
-        {-points {int min 1000} 200000 N "CL points in the generated file (passes of 1000)"}
+        {-sizes any {50000 200000 1000000} "N ..." "CL points of the generated files (multiples of 1000)"}
         {-machine text "" FILE "machine file (default machines/hh-tilt45.tcl)"}
-        {-noreplay bool 0 "" "skip the end-to-end replay row"}
-        {-save bool 0 "" "store the figures as the new baseline"}
         {-help bool 0 "" "print this help"}
     }
-    # Figures in table order: key, label.
-    variable rows {
-        points       "CL points"
-        generate_s   "generate the CL file (s)"
-        read_us      "read only (us/point)"
-        greedy_us    "greedy, no linearisation (us/point)"
-        optimal_us   "optimal, no linearisation (us/point)"
-        lin_us       "optimal + linearisation (us/point)"
-        replay_us    "replay end to end (us/point)"
-        inserted     "points inserted"
-        retracts     "retracts (optimal)"
-        travel_greedy  "rotary travel, greedy (deg)"
-        travel_optimal "rotary travel, optimal (deg)"
-    }
+    # Points a pass, and the passes generated at most.
+    variable pass 1000
+    variable maxPasses 200
 }
 
 # ::bench::Generate --
-#	Writes a raster of n points (passes of 1000) as CLSF to path; returns
-#	the number of points.
-proc ::bench::Generate {n path} {
-    set passes [expr {max(1, $n / 1000)}]
-    set pts [::fivax::toolpath raster -passes $passes -step 1000 -D 16 -r 4 -lead 10 -tilt 15]
-    set chan [open $path w]
-    try {
-        chan configure $chan -translation lf
-        puts $chan [join [::fivax::toolpath clsf $pts -op BENCH_RASTER -D 16 -r 4 -length 75] \n]
-    } finally {
-        close $chan
+#	Writes CLSF files of each size in sizes (points) into dir; returns a
+#	dict size -> path.
+proc ::bench::Generate {sizes dir} {
+    variable pass
+    variable maxPasses
+    variable ::root
+    source [file join $root tools lib toolpath.tcl]
+    set most [tcl::mathfunc::max {*}$sizes]
+    set passes [expr {min($maxPasses, max(1, $most / $pass))}]
+    set pts [::fivax::toolpath raster -passes $passes -step $pass -D 16 -r 4 -lead 10 -tilt 15]
+    set lines [::fivax::toolpath clsf $pts -op BENCH_RASTER -D 16 -r 4 -length 75]
+    # the header up to the first feed, the points, the retract and end
+    set head [lrange $lines 0 9]
+    set body [lrange $lines 10 end-3]
+    set tail [lrange $lines end-2 end]
+    # each copy starts with its full tool axis (the first GOTO left it out)
+    set first {}
+    lassign [lindex $pts 0] p t
+    lset body 0 [::fivax::toolpath goto $p $t first]
+    set files [dict create]
+    foreach n $sizes {
+        set path [file join $dir bench-$n.cls]
+        set chan [open $path w]
+        try {
+            chan configure $chan -translation lf -buffersize 1048576
+            puts $chan [join $head \n]
+            for {set left $n} {$left > 0} {incr left -[llength $body]} {
+                puts $chan [join [lrange $body 0 [expr {min($left, [llength $body]) - 1}]] \n]
+            }
+            puts $chan [join $tail \n]
+        } finally {
+            close $chan
+        }
+        dict set files $n $path
     }
-    llength $pts
+    return $files
 }
 
-# ::bench::Read -- Returns the number of GOTO records of the CLSF file path.
-proc ::bench::Read {path} {
-    set r [::fivax::clsf open $path]
-    set n 0
-    try {
-        while {[set rec [$r next]] ne ""} {
-            if {[dict get $rec kind] eq "GOTO"} {incr n}
-        }
-    } finally {
-        $r destroy
+# ::bench::Run --
+#	Runs the command words as a child process; returns {wall rssMB stderr}:
+#	seconds, peak resident set (MB, from /usr/bin/time or VmHWM polled
+#	every 50 ms) and the child's standard error.
+proc ::bench::Run {words} {
+    set errFile [file join [file dirname [lindex $words end]] bench-[pid].err]
+    set timeFile $errFile.time
+    set timer [expr {[file executable /usr/bin/time]
+        ? [list /usr/bin/time -f %M -o $timeFile] : {}}]
+    set t0 [clock milliseconds]
+    set pid [exec {*}$timer {*}$words 2> $errFile &]
+    set hwm 0
+    while {[ProcState $pid] ne "Z"} {
+        if {![llength $timer]} {set hwm [expr {max($hwm, [VmHWM $pid])}]}
+        after 50
+    }
+    set wall [expr {([clock milliseconds] - $t0) / 1000.0}]
+    set chan [open $errFile r]
+    set err [read $chan]
+    close $chan
+    if {[llength $timer]} {
+        set chan [open $timeFile r]
+        set hwm [lindex [split [string trim [read $chan]] \n] end]
+        close $chan
+    }
+    file delete $errFile $timeFile
+    list $wall [expr {$hwm / 1024.0}] $err
+}
+
+# ::bench::VmHWM -- Returns the peak resident set (kB) of process pid, 0 when gone.
+proc ::bench::VmHWM {pid} {
+    if {[catch {open /proc/$pid/status r} chan]} {return 0}
+    set text [read $chan]
+    close $chan
+    if {[regexp {VmHWM:\s+(\d+)} $text -> kb]} {return $kb}
+    return 0
+}
+
+# ::bench::ProcState -- Returns the state letter of process pid ("Z" when gone).
+proc ::bench::ProcState {pid} {
+    if {[catch {open /proc/$pid/stat r} chan]} {return Z}
+    set text [read $chan]
+    close $chan
+    lindex [string range $text [string last ) $text]+2 end] 0
+}
+
+# ::bench::Records -- Returns the CL records replay read, from its summary text err.
+proc ::bench::Records {err} {
+    if {![regexp {fivax: (\d+) records read} $err -> n]} {
+        error "replay failed:\n$err"
     }
     return $n
 }
 
-# ::bench::Plan --
-#	Feeds the CLSF file path through a planner for machine with options;
-#	returns the planner's stats.
-proc ::bench::Plan {machine path args} {
-    set h [::fivax::motion create $machine -msys 1 {*}$args]
-    set r [::fivax::clsf open $path]
-    set rapid 0
-    set feed 0.0
-    set axis {0 0 1}
-    try {
-        while {[set rec [$r next]] ne ""} {
-            switch -- [dict get $rec kind] {
-                RAPID {set rapid 1}
-                FEDRAT {set feed [dict get $rec value]}
-                TLDATA {
-                    $h flush
-                    $h setTool [dict get $rec length]
-                }
-                MSYS {
-                    $h setFrame [dict get $rec origin] [dict get $rec xaxis] [dict get $rec yaxis]
-                }
-                GOTO {
-                    if {[llength [dict get $rec axis]]} {set axis [dict get $rec axis]}
-                    $h add [expr {$rapid ? "rapid" : "feed"}] \
-                        [dict get $rec point] $axis $feed [dict get $rec line]
-                    set rapid 0
-                }
-            }
-        }
-        $h flush
-        return [$h stats]
-    } finally {
-        $r destroy
-        $h destroy
+# ::bench::Loop --
+#	The minimal loop: reads the GOTO records of CL file cl (scan), takes
+#	the first inverse solution (kin orientations, position) on machine
+#	file machineFile and writes one G1 block a point to out.
+proc ::bench::Loop {machineFile cl out} {
+    set model [::fivax::kin::model [::fivax::machine::load $machineFile] 75]
+    set toDeg [expr {180.0 / acos(-1.0)}]
+    set in [open $cl r]
+    set o [open $out w]
+    chan configure $o -translation lf -buffersize 1048576
+    set t {0.0 0.0 1.0}
+    set n 0
+    while {[gets $in line] >= 0} {
+        if {[string range $line 0 4] ne "GOTO/"} continue
+        set k [scan [string range $line 5 end] %f,%f,%f,%f,%f,%f x y z i j kk]
+        if {$k == 6} {set t [list $i $j $kk]}
+        set q [lindex [::fivax::kin::orientations $model $t] 1 0]
+        lassign [::fivax::kin::position $model [list $x $y $z] $q] X Y Z
+        lassign $q b c
+        puts $o [format "G1 X%.3f Y%.3f Z%.3f B%.3f C%.3f" $X $Y $Z \
+            [expr {$b * $toDeg}] [expr {$c * $toDeg}]]
+        incr n
     }
+    close $in
+    close $o
+    puts stderr "fivax: $n records read"
 }
 
-# ::bench::Replay -- Runs tools/replay.tcl on path for machineFile into a temporary NC file.
-proc ::bench::Replay {machineFile path} {
+# ::bench::NoCheck --
+#	Runs tools/replay.tcl with the command line words, the post's block
+#	check replaced by a no-op in the post interpreter.
+proc ::bench::NoCheck {words} {
     variable ::root
-    set out [file rootname $path].nc
-    exec [info nameofexecutable] [file join $root tools replay.tcl] -quiet \
-        -machine $machineFile -o $out $path 2>@1
-    file delete $out
-}
-
-# ::bench::Us -- Returns the microseconds per point of running script at the caller's level.
-proc ::bench::Us {n script} {
-    set t0 [clock microseconds]
-    uplevel 1 $script
-    expr {([clock microseconds] - $t0) / double($n)}
-}
-
-# ::bench::Baseline -- Returns the dict stored in file path ({} when absent).
-proc ::bench::Baseline {path} {
-    if {![file readable $path]} {return {}}
-    set chan [open $path r]
-    try {
-        set d [dict create]
-        foreach line [split [read $chan] \n] {
-            set line [string trim $line]
-            if {$line eq "" || [string index $line 0] eq "#"} continue
-            dict set d [lindex $line 0] [lindex $line 1]
-        }
-        return $d
-    } finally {
-        close $chan
+    rename ::fivax::mom::create ::fivax::mom::BenchCreate
+    proc ::fivax::mom::create {args} {
+        set rt [::fivax::mom::BenchCreate {*}$args]
+        [$rt interp] eval {oo::define ::fivax::verify::Checker method block {line move} {}}
+        return $rt
     }
+    set ::argv $words
+    uplevel #0 [list source [file join $root tools replay.tcl]]
 }
 
-# ::bench::Save -- Writes figures to path with a header naming the run.
-proc ::bench::Save {path figures header} {
-    variable rows
-    set chan [open $path w]
-    try {
-        chan configure $chan -translation lf
-        puts $chan "# fivax bench baseline (tclsh tools/bench.tcl -save): $header"
-        foreach {key label} $rows {
-            if {[dict exists $figures $key]} {puts $chan "$key [dict get $figures $key]"}
-        }
-    } finally {
-        close $chan
-    }
+# ::bench::Mb -- Returns megabytes mb printed for the table.
+proc ::bench::Mb {mb} {
+    format %.0f $mb
 }
 
-# ::bench::Fmt -- Returns value v printed for the table ("-" when absent).
-proc ::bench::Fmt {v} {
-    if {$v eq ""} {return -}
-    if {[string is entier -strict $v]} {return $v}
-    format %.1f $v
-}
-
-# ::bench::main -- Generates the file, measures every row, prints the table.
+# ::bench::main -- Generates the files, runs every row, prints the table.
 proc ::bench::main {argv} {
     variable options
-    variable rows
     variable ::root
+    switch -- [lindex $argv 0] {
+        -loop {return [Loop {*}[lrange $argv 1 end]]}
+        -nocheck {return [NoCheck [lrange $argv 1 end]]}
+    }
     try {
         lassign [::fivax::opts argv $options $argv bench] opts rest
     } trap {FIVAX OPTION} {msg} {
@@ -180,49 +196,56 @@ proc ::bench::main {argv} {
         exit 1
     }
     if {[dict get $opts -help] || [llength $rest]} {
-        puts "usage: tclsh tools/bench.tcl ?options?\n\nMeasures planner speed on a generated CL file.\nOptions:\n[::fivax::opts help $options]"
+        puts "usage: tclsh tools/bench.tcl ?options?\n\nEnd-to-end replay speed on generated CL files.\nOptions:\n[::fivax::opts help $options]"
         exit [expr {[llength $rest] > 0}]
+    }
+    set sizes [dict get $opts -sizes]
+    foreach n $sizes {
+        if {![string is entier -strict $n] || $n < 1000} {
+            puts stderr "bench: bad -sizes \"$sizes\": must be numbers of points >= 1000"
+            exit 1
+        }
     }
     set machineFile [dict get $opts -machine]
     if {$machineFile eq ""} {set machineFile [file join $root machines hh-tilt45.tcl]}
-    set machine [::fivax::machine load $machineFile]
+    set machineFile [file normalize $machineFile]
+    set name [dict get [::fivax::machine load $machineFile] name]
     set dir [file join [expr {[info exists ::env(TMPDIR)] ? $::env(TMPDIR) : "/tmp"}] \
         fivax-bench-[pid]]
     file mkdir $dir
-    set cl [file join $dir raster.cls]
-    set f [dict create]
+    set tclsh [info nameofexecutable]
+    set replay [file join $root tools replay.tcl]
+    set bench [file join $root tools bench.tcl]
     try {
-        set t0 [clock microseconds]
-        set n [Generate [dict get $opts -points] $cl]
-        dict set f points $n
-        dict set f generate_s [expr {([clock microseconds] - $t0) / 1e6}]
-        puts stderr "bench: $n points on [dict get $machine name] ([format %.1f [dict get $f generate_s]] s to generate)"
-        dict set f read_us [Us $n {Read $cl}]
-        dict set f greedy_us [Us $n {set g [Plan $machine $cl -rotary greedy -tol 0]}]
-        dict set f optimal_us [Us $n {set o [Plan $machine $cl -rotary optimal -tol 0]}]
-        dict set f lin_us [Us $n {set l [Plan $machine $cl -rotary optimal]}]
-        if {![dict get $opts -noreplay]} {
-            dict set f replay_us [Us $n {Replay $machineFile $cl}]
+        set t0 [clock milliseconds]
+        set files [Generate $sizes $dir]
+        puts [format "bench: %s; files generated in %.1f s; Tcl %s, %s, %s" $name \
+            [expr {([clock milliseconds] - $t0) / 1000.0}] [info patchlevel] \
+            [exec uname -m] [clock format [clock seconds] -format %Y-%m-%d]]
+        puts [format "%-9s %-18s %9s %12s %9s %8s" points run records records/s "wall s" "RSS MB"]
+        foreach n $sizes {
+            set cl [dict get $files $n]
+            set out [file join $dir bench.nc]
+            set rows [list \
+                replay [list $tclsh $replay -machine $machineFile -o $out $cl] \
+                "-tol 0, no check" [list $tclsh $bench -nocheck -machine $machineFile -tol 0 -o $out $cl] \
+                minimal [list $tclsh $bench -loop $machineFile $cl $out]]
+            set rates {}
+            foreach {label words} $rows {
+                lassign [Run $words] wall mb err
+                set records [Records $err]
+                set rate [expr {$records / $wall}]
+                lappend rates $rate
+                puts [format "%-9d %-18s %9d %12.0f %9.2f %8s" $n $label $records $rate $wall [Mb $mb]]
+                file delete $out [file rootname $out].log
+            }
+            puts [format "%-9s %-18s %s" "" "minimal / replay" \
+                [format "%.1f (%.1f without linearisation and check)" \
+                    [expr {[lindex $rates 2] / [lindex $rates 0]}] \
+                    [expr {[lindex $rates 2] / [lindex $rates 1]}]]]
         }
-        dict set f inserted [dict get $l inserted]
-        dict set f retracts [dict get $o retracts]
-        dict set f travel_greedy [dict get $g travel]
-        dict set f travel_optimal [dict get $o travel]
     } finally {
         file delete -force $dir
-    }
-    set baseFile [file join $root tools bench-baseline.txt]
-    set base [Baseline $baseFile]
-    puts [format "%-40s %12s %12s" figure now baseline]
-    foreach {key label} $rows {
-        set now [expr {[dict exists $f $key] ? [dict get $f $key] : ""}]
-        set was [expr {[dict exists $base $key] ? [dict get $base $key] : ""}]
-        puts [format "%-40s %12s %12s" $label [Fmt $now] [Fmt $was]]
-    }
-    if {[dict get $opts -save]} {
-        Save $baseFile $f "$n points, [dict get $machine name], Tcl [info patchlevel],\
-            [clock format [clock seconds] -format %Y-%m-%d]"
-        puts stderr "bench: baseline saved to $baseFile"
     }
 }
 

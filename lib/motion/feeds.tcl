@@ -21,7 +21,7 @@ oo::define ::fivax::motion::Planner {
     method FeedOf {a b f} {
         lassign [lindex $a 0] X0 Y0 Z0 a1 a2
         lassign [lindex $b 0] X1 Y1 Z1 b1 b2
-        set d [::fivax::vec::norm [::fivax::vec::sub [lindex $b 1] [lindex $a 1]]]
+        set d [::fivax::vec::dist [lindex $b 1] [lindex $a 1]]
         if {$S(feed) eq "direct" || (abs($b1 - $a1) <= 1e-9 && abs($b2 - $a2) <= 1e-9)} {
             return [list direct $f $f $d]
         }

@@ -85,7 +85,7 @@ oo::define ::fivax::motion::Planner {
         set moves [my flush]
         if {$S(last) eq ""} {return [list 0 $moves]}
         lassign $S(last) jl Pl tl
-        if {[::fivax::vec::norm [::fivax::vec::sub $Pl $P0]] > 1e-6
+        if {[::fivax::vec::dist $Pl $P0] > 1e-6
                 || [::fivax::vec::angle $tl $t] > 1e-9} {
             return [list 0 $moves]
         }

@@ -25,11 +25,19 @@ oo::define ::fivax::motion::Planner {
         set ctx $S(ctx)
         lassign $a ja Pa - acta la
         lassign $b jb Pb - actb lb
-        lassign [dict get $ctx swing] ms1 ms2
-        set ok [expr {[::fivax::motion::Cost $ms1 $ms2 1 [lindex $ja 3] [lindex $ja 4] $la \
+        set ok [expr {[::fivax::motion::Cost $S(ms1) $S(ms2) 1 [lindex $ja 3] [lindex $ja 4] $la \
             [lindex $jb 3] [lindex $jb 4] $lb] < $retractCost}]
         set n 2
         if {$ok} {
+            # First the bound (kin interpolationBound): it proves most moves
+            # within tolerance without the quarter points. The tips of a
+            # and b are their CL points (the linear axes absorb the
+            # rounding); their axes act are within S(actError) of the
+            # joints' axis: the rotary rounding (half a step on each axis)
+            # and the 6.3e-9 rad a candidate may be moved onto a limit.
+            lassign [::fivax::kin::interpolationBound $S(model) $ja $jb $Pa $Pb $acta $actb \
+                0.0 $S(actError)] bp ba
+            if {$bp <= $S(tol) && $ba <= $S(atolCheck)} {return [list $b]}
             lassign [::fivax::kin::interpolationError $S(model) $ja $jb $Pa $Pb $acta $actb \
                 $S(tol) $S(atolCheck)] dp da
             set e [expr {$dp / $S(tol)}]

@@ -37,8 +37,7 @@ oo::define ::fivax::motion::Planner {
             set moves [my Transfer $S(last) $b $src]
         } else {
             lassign [my LastRefs] a1 a2 al
-            lassign [dict get $ctx swing] ms1 ms2
-            if {[::fivax::motion::Cost $ms1 $ms2 1 $a1 $a2 $al $q1 $q2 $lab] < $retractCost} {
+            if {[::fivax::motion::Cost $S(ms1) $S(ms2) 1 $a1 $a2 $al $q1 $q2 $lab] < $retractCost} {
                 my CountSwing $a2 $q2 [lindex $S(last) 2] $t
                 set moves [my FeedMoves [my Linearise $S(last) $b 0 $src] $feed $src]
             } else {
@@ -61,7 +60,8 @@ oo::define ::fivax::motion::Planner {
     # X Y Z are those of the output frame (see Out); in a work plane no
     # rotary is written.
     method Move {kind joints write P t feed src {tag ""} {note ""}} {
-        lassign [lmap axis $S(axes) {dict get $axis name}] n1 n2
+        set n1 $S(n1)
+        set n2 $S(n2)
         lassign $joints - - - q1 q2
         lassign [my Out $joints] X Y Z
         set i [lsearch -exact $write R]
@@ -166,7 +166,8 @@ oo::define ::fivax::motion::Planner {
 
     # Adds the rotary travel of moves to the statistics.
     method Travel {moves} {
-        lassign [lmap axis $S(axes) {dict get $axis name}] n1 n2
+        set n1 $S(n1)
+        set n2 $S(n2)
         if {$S(last) eq ""} {
             set p1 ""
         } else {
@@ -190,7 +191,7 @@ oo::define ::fivax::motion::Planner {
         lassign [lindex $a 0] - - - a1 a2
         lassign [lindex $b 0] - - - b1 b2
         set turn [expr {abs($b1 - $a1) + abs($b2 - $a2)}]
-        if {$turn > 1e-9 && [::fivax::vec::norm [::fivax::vec::sub [lindex $b 1] [lindex $a 1]]] < 1e-9} {
+        if {$turn > 1e-9 && [::fivax::vec::dist [lindex $b 1] [lindex $a 1]] < 1e-9} {
             incr S(dwells)
             set S(dwellTurn) [expr {$S(dwellTurn) + $turn}]
         }

@@ -91,7 +91,8 @@ proc ::fivax::motion::create {machine args} {
 }
 
 oo::class create ::fivax::motion::Planner {
-    # S: the planner's state; the keys are listed in the constructor.
+    # S: the planner's state; the keys are listed in the constructor (n1,
+    # n2: the names of the tilt and azimuth axes).
     variable S
 
     # Sets up the planner for machine with the parsed option dict opts.
@@ -134,6 +135,7 @@ oo::class create ::fivax::motion::Planner {
                 continuous $cont unlimited [expr {$cont && $max - $min > 1e299}] \
                 rollover [dict get $axis rollover] prefer [dict get $axis prefer] swing $ms]
         }
+        lassign [lmap axis $S(axes) {dict get $axis name}] S(n1) S(n2)
         set S(frame) {}
         array set S {last "" lastHole "" buf {} pathStart 1 points 0 moves 0 travel 0.0
             inserted 0 retracts 0 holds 0 swings 0 unresolved 0 forced 0 dwells 0
@@ -158,6 +160,10 @@ oo::class create ::fivax::motion::Planner {
         set S(toolLength) $len
         set S(ctx) [::fivax::motion::Context $model $S(name) $S(axes) $S(cone) $S(angle-step)]
         set S(model) $model
+        # per-machine constants of the per-point path: the axes' max_swing,
+        # and the axis error of a point record (see Linearise)
+        lassign [dict get $S(ctx) swing] S(ms1) S(ms2)
+        set S(actError) [expr {[dict get $S(ctx) step] + 1e-7}]
     }
 
     # Sets the MSYS frame (origin and unit X, Y axes of the MCS in absolute
@@ -287,7 +293,8 @@ oo::class create ::fivax::motion::Planner {
             set choice [::fivax::motion::Preferred $ctx $cands]
         } else {
             lassign $refs a1 a2 al
-            lassign [dict get $ctx swing] ms1 ms2
+            set ms1 $S(ms1)
+            set ms2 $S(ms2)
             set isFeed [expr {$kind eq "feed"}]
             set ok {}
             foreach {b1 b2 bl} $cands {
@@ -352,7 +359,8 @@ oo::class create ::fivax::motion::Planner {
     # only the cheaper is kept.
     method Relax {prev cands isFeed t src} {
         namespace upvar ::fivax::motion retractCost retractCost
-        lassign [dict get $S(ctx) swing] ms1 ms2
+        set ms1 $S(ms1)
+        set ms2 $S(ms2)
         set w1 $S(w1)
         set w2 $S(w2)
         set err [expr {$S(on-limit) eq "error"}]
