@@ -4,8 +4,10 @@
 #	the forward kinematics (never the inverse) and measures the tip and axis
 #	deviation at each CL point and, for cutting moves, at the quarter points
 #	of the controller's linear joint interpolation against the straight CL
-#	segment and the great circle of the tool axis (spec section 7). It knows
-#	nothing of how the planner chose the blocks: it depends on kin only.
+#	segment and the great circle of the tool axis (spec section 7), and
+#	refuses a written value outside the machine's travel or rotary limits
+#	(machine checkLimits). It knows nothing of how the planner chose the
+#	blocks: it depends on kin and the machine dict only.
 
 namespace eval ::fivax::verify {
     namespace export create
@@ -26,7 +28,7 @@ proc ::fivax::verify::create {machine args} {
 }
 
 oo::class create ::fivax::verify::Checker {
-    # S: machine, tableOffset, names, rollover, limits, model, the modal
+    # S: machine, tableOffset, names, rollover, model, the modal
     # axis values X Y Z q1 q2, prev (the last checked block) and the
     # statistics (see summary).
     variable S
@@ -37,13 +39,6 @@ oo::class create ::fivax::verify::Checker {
         set chain [dict get $machine chain]
         set S(names) [lmap axis $chain {dict get $axis name}]
         set S(rollover) [lmap axis $chain {dict get $axis rollover}]
-        set S(limits) [lmap axis $chain {
-            if {[dict get $axis continuous] && [dict get $axis rollover]} {
-                list -1e300 1e300
-            } else {
-                list [dict get $axis min] [dict get $axis max]
-            }
-        }]
         array set S {X {} Y {} Z {} q1 {} q2 {} prev {} checked 0 segments 0
             maxPos 0.0 maxAng 0.0 maxMidPos 0.0 maxMidAng 0.0 limitViolations 0
             worst {} worstMid {}}
@@ -58,10 +53,13 @@ oo::class create ::fivax::verify::Checker {
 
     # Reads the axis words of the NC line, updates the modal machine
     # state, and when move (a motion move record) carries a CL target
-    # (P, t) measures the deviation.
+    # (P, t) measures the deviation. A written value outside the travel or
+    # the rotary limits is counted and raises {FIVAX MACHINE LIMIT} with
+    # the move's FILE:LINE.
     method block {line move} {
         namespace upvar ::fivax::num pi pi
         set text [regsub -all {\([^)]*\)} $line ""]
+        set written {}
         # (a flat pattern: nested groups with -all -inline cost 30 times more)
         foreach word [regexp -all -inline {[A-Z][-+.0-9]+} $text] {
             set letter [string index $word 0]
@@ -69,12 +67,18 @@ oo::class create ::fivax::verify::Checker {
             if {![string is double -strict $value]} continue
             if {$letter in {X Y Z}} {
                 set S($letter) $value
+                lappend written $letter $value
             } elseif {[set i [lsearch -exact $S(names) $letter]] >= 0} {
                 set q [::fivax::num::rad $value]
-                lassign [lindex $S(limits) $i] min max
-                if {$q < $min - 1e-9 || $q > $max + 1e-9} {incr S(limitViolations)}
+                lappend written $letter $q
                 set S(q[expr {$i + 1}]) $q
             }
+        }
+        if {[llength [::fivax::machine::outside $S(machine) $written]]} {
+            incr S(limitViolations)
+            set where [dict get $move src]
+            if {$where eq ""} {set where "NC block '$line'"}
+            ::fivax::machine::checkLimits $S(machine) $written $where
         }
         set P [dict get $move P]
         if {$P eq "" || $S(X) eq "" || $S(Y) eq "" || $S(Z) eq "" || $S(q1) eq "" || $S(q2) eq ""} {
