@@ -154,14 +154,15 @@ oo::class create ::fivax::clsf::Reader {
     }
 
     # Raises the error of the physical line lineNo: too long, or refused
-    # while decoding (text is then NUL and the reason).
+    # while read (text is then a refusal: NUL, the error detail, a space,
+    # the reason; see ::fivax::clsf::Decode).
     method Refuse {text lineNo} {
         namespace upvar ::fivax::clsf maxLine maxLine
         if {[string index $text 0] ne "\0"} {
-            set text "\0line longer than $maxLine characters"
+            set text "\0LINE line longer than $maxLine characters"
         }
-        set why [string range $text 1 end]
-        ::fivax::Fail CLSF [expr {[string match line* $why] ? "LINE" : "TEXT"}] "$name:$lineNo: $why"
+        regexp {^\0(\S+) (.*)$} $text -> detail why
+        ::fivax::Fail CLSF $detail "$name:$lineNo: $why"
     }
 
     # Consumes the rest of a continuation chain whose last line so far
@@ -224,7 +225,7 @@ oo::class create ::fivax::clsf::Reader {
                     if {[string length $carry] > $maxLine} {
                         set skip 1
                         set why [::fivax::clsf::Control [string range $carry 0 $maxLine]]
-                        if {$why eq ""} {set why "line longer than $maxLine characters"}
+                        if {$why eq ""} {set why "LINE line longer than $maxLine characters"}
                         set lines [list "\0$why"]
                         set carry ""
                         set idx 0
@@ -273,8 +274,9 @@ proc ::fivax::clsf::progress {cmd} {
 # ::fivax::clsf::Decode --
 #	Returns the physical lines of part (bytes, line ends \n, \r\n or \r)
 #	as UTF-8 decoded strings. A line holding a control character other
-#	than tab (NUL included) or bytes that are not UTF-8 is replaced by
-#	NUL followed by the reason.
+#	than tab (NUL included) or bytes that are not UTF-8 is replaced by a
+#	refusal: NUL, "TEXT", a space and the reason (a decoded line never
+#	holds NUL).
 proc ::fivax::clsf::Decode {part} {
     if {[string first \r $part] >= 0} {set part [string map {\r\n \n \r \n} $part]}
     set lines [split $part \n]
@@ -288,7 +290,7 @@ proc ::fivax::clsf::Decode {part} {
         } elseif {![string is ascii $text]} {
             set decoded [encoding convertfrom utf-8 $text]
             if {[encoding convertto utf-8 $decoded] ne $text} {
-                set text "\0bytes that are not UTF-8 text"
+                set text "\0TEXT bytes that are not UTF-8 text"
             } else {
                 set text $decoded
             }
@@ -298,13 +300,14 @@ proc ::fivax::clsf::Decode {part} {
 }
 
 # ::fivax::clsf::Control --
-#	Returns "control character 0xNN in column N" for the first control
-#	character in text other than tab, \n and \r (NUL included), or "".
+#	Returns "TEXT control character 0xNN in column N" for the first
+#	control character in text other than tab, \n and \r (NUL included),
+#	or "".
 proc ::fivax::clsf::Control {text} {
     if {![regexp -indices {[\x00-\x08\x0b\x0c\x0e-\x1f\x7f]} $text at]} {return ""}
     set col [lindex $at 0]
     scan [string index $text $col] %c code
-    format "control character 0x%02X in column %d" $code [expr {$col + 1}]
+    format "TEXT control character 0x%02X in column %d" $code [expr {$col + 1}]
 }
 
 # ::fivax::clsf::parse --

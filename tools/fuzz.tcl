@@ -56,6 +56,8 @@ namespace eval ::fuzz {
             {values no control accepts are written: F0 / F0.000 (G93 with a tiny feed, FEDRAT/0), S0 for SPINDL/RPM,1e300, negative S, T, H}
         internal {lib/motion/*, lib/curve.tcl, lib/kin.tcl, lib/vec.tcl}
             {errors that name no cause on valid-looking data: domain error, integer value too large to represent, cannot normalise a zero vector (opposite tool axes), floating-point value too large}
+        unset {post/fivax.tcl, lib/mom.tcl}
+            {a handler reads a mom_* variable the CL data never set: SPINDL/ON (or SPINDL/CLW) without a speed before any speed makes MOM_spindle_rpm fail with can't read "mom_spindle_speed"}
         hang {lib/motion/*, lib/curve.tcl}
             {unbounded work: a huge coordinate (1e14 and beyond) after a tool-axis change, rotary limits of +-99999 or +-3600 deg, a huge CIRCLE}
     }
@@ -114,6 +116,8 @@ namespace eval ::fuzz {
         {\[exec touch CANARY\]} "\[exec touch CANARY\]\n" {{*}[exec touch CANARY]}
         {[source CANARY]} {${CANARY}} {[::exit 3]} {[exit 3]}
     }
+    # Refusals whose message names no cause the user can act on.
+    variable badMessages {normalise a zero vector|wrong # args|no such variable|invalid command name}
     # Tags of a case that trigger a known unbounded loop (issue 'hang').
     variable hangTags {bigcoord|number:(1e14|1e50|1e101|-3\.55e302|1\.1e39|9999)|limits99999|limits3600|value:CIRCLE|value:FROM/1e300|value:TLDATA/MILL,10,0,1e300}
     variable R
@@ -204,13 +208,16 @@ proc ::fuzz::Payload {canary} {
     string map [list CANARY $canary] [Pick $payloads]
 }
 
+# ::fuzz::M_drop -- Drops a random line.
 proc ::fuzz::M_drop {lines canary} {
     list [lreplace $lines [set i [Line $lines]] $i] drop
 }
+# ::fuzz::M_dup -- Duplicates a random line.
 proc ::fuzz::M_dup {lines canary} {
     set i [Line $lines]
     list [linsert $lines $i [lindex $lines $i]] dup
 }
+# ::fuzz::M_swap -- Swaps two random lines.
 proc ::fuzz::M_swap {lines canary} {
     set i [Line $lines]
     set j [Line $lines]
@@ -219,15 +226,18 @@ proc ::fuzz::M_swap {lines canary} {
     lset lines $j $a
     list $lines swap
 }
+# ::fuzz::M_truncfile -- Cuts the file at a random byte.
 proc ::fuzz::M_truncfile {lines canary} {
     set text [join $lines \n]
     list [split [string range $text 0 [Rand [string length $text]]] \n] truncfile
 }
+# ::fuzz::M_truncline -- Cuts a random line at a random byte.
 proc ::fuzz::M_truncline {lines canary} {
     set i [Line $lines]
     set l [lindex $lines $i]
     list [lreplace $lines $i $i [string range $l 0 [Rand [string length $l]]]] truncline
 }
+# ::fuzz::M_flip -- Flips one bit of a random byte.
 proc ::fuzz::M_flip {lines canary} {
     set i [Line $lines]
     set l [lindex $lines $i]
@@ -237,6 +247,7 @@ proc ::fuzz::M_flip {lines canary} {
     set c [expr {($c ^ (1 << [Rand 8])) & 255}]
     list [lreplace $lines $i $i [string replace $l $p $p [format %c $c]]] flip
 }
+# ::fuzz::M_special -- Inserts a Tcl special character ([ ] $ { } \ ; ") into a random line.
 proc ::fuzz::M_special {lines canary} {
     set ch [Pick [list \[ \] \$ \{ \} \\ \; \" "\$\$" "\{\}" "\[\]" "\\\n"]]
     set i [Line $lines]
@@ -244,12 +255,14 @@ proc ::fuzz::M_special {lines canary} {
     set p [Rand [expr {[string length $l] + 1}]]
     list [lreplace $lines $i $i [string replace $l $p -1 $ch]] special
 }
+# ::fuzz::M_nul -- Inserts NUL or another control character into a random line.
 proc ::fuzz::M_nul {lines canary} {
     set i [Line $lines]
     set l [lindex $lines $i]
     set p [Rand [expr {[string length $l] + 1}]]
     list [lreplace $lines $i $i [string replace $l $p -1 [Pick {"\x00" "\x01" "\x1b" "\x7f" "\x0c" "\x1a"}]]] nul
 }
+# ::fuzz::M_utf8 -- Inserts bytes that are not UTF-8 into a random line.
 proc ::fuzz::M_utf8 {lines canary} {
     set bad [Pick {"\xff" "\xc3" "\xed\xa0\x80" "\xc0\x80" "\xfe\xff" "\xe2\x82"}]
     set i [Line $lines]
@@ -257,9 +270,11 @@ proc ::fuzz::M_utf8 {lines canary} {
     set p [Rand [expr {[string length $l] + 1}]]
     list [lreplace $lines $i $i [string replace $l $p -1 $bad]] utf8
 }
+# ::fuzz::M_goodutf8 -- Inserts a PPRINT with valid UTF-8 text (must post).
 proc ::fuzz::M_goodutf8 {lines canary} {
     list [Insert $lines "PPRINT/[Pick {"\xc3\xa9t\xc3\xa9" "90\xc2\xb0" "\xe2\x82\xac5" "\xf0\x9f\x94\xa7"}]"] goodutf8
 }
+# ::fuzz::M_bom -- Puts a byte order mark at the start of the file or of a line.
 proc ::fuzz::M_bom {lines canary} {
     if {[Chance 0.5]} {
         lset lines 0 "\xef\xbb\xbf[lindex $lines 0]"
@@ -268,6 +283,7 @@ proc ::fuzz::M_bom {lines canary} {
     set i [Line $lines]
     list [lreplace $lines $i $i "\xef\xbb\xbf[lindex $lines $i]"] bom-mid
 }
+# ::fuzz::M_crlf -- Ends the lines with CRLF, or with CR alone.
 proc ::fuzz::M_crlf {lines canary} {
     set sep [Pick {"\r" "\r\r"}]
     if {[Chance 0.3]} {
@@ -276,6 +292,7 @@ proc ::fuzz::M_crlf {lines canary} {
     }
     list [lmap l $lines {string cat $l "\r"}] crlf
 }
+# ::fuzz::M_longline -- Inserts a line of 65537 to 100000 characters.
 proc ::fuzz::M_longline {lines canary} {
     set n [expr {[Chance 0.5] ? 100000 : 65537 + [Rand 1000]}]
     set text [Pick [list [string repeat x $n] "GOTO/[string repeat 1 $n],1,1" \
@@ -283,12 +300,14 @@ proc ::fuzz::M_longline {lines canary} {
         [string repeat "1," [expr {$n / 2}]]]]
     list [Insert $lines [string map [list CANARY $canary] $text]] longline
 }
+# ::fuzz::M_chain -- Inserts a GOTO continued by $ over 100 to 70000 lines.
 proc ::fuzz::M_chain {lines canary} {
     set n [Pick {100 5000 40000 70000}]
     set unit [Pick [list "\$" " ,\$" "1,\$" "\$\$ c \$"]]
     set chain "GOTO/1,\$\n[string repeat "$unit\n" $n]2,3"
     list [Insert $lines $chain] chain-$n
 }
+# ::fuzz::M_number -- Replaces a number by nan, inf, 1e308, -0, 400 digits, an empty field, ...
 proc ::fuzz::M_number {lines canary} {
     variable badNumbers
     set re {[-+]?(\d+\.?\d*|\.\d+)([eE][-+]?\d+)?}
@@ -303,6 +322,7 @@ proc ::fuzz::M_number {lines canary} {
     lassign $spot a b
     list [lreplace $lines $i $i [string replace $l $a $b $v]] "number:$v"
 }
+# ::fuzz::M_axis -- Gives a GOTO a zero, non-unit, downward or flipping tool axis.
 proc ::fuzz::M_axis {lines canary} {
     set idx [lsearch -all -regexp $lines {^\s*GOTO\s*/}]
     if {![llength $idx]} {return [list $lines axis-none]}
@@ -321,6 +341,7 @@ proc ::fuzz::M_axis {lines canary} {
     }
     list $lines "axis:[join $axis ,]"
 }
+# ::fuzz::M_bigcoord -- Inserts a GOTO with a coordinate from 1e14 to 1e302 after an axis change.
 proc ::fuzz::M_bigcoord {lines canary} {
     variable bigNumbers
     set idx [lsearch -all -regexp $lines {^\s*GOTO\s*/}]
@@ -330,6 +351,7 @@ proc ::fuzz::M_bigcoord {lines canary} {
     set lines [linsert $lines $i "GOTO/0,0,$v,0,0.6,0.8" "GOTO/1,2,3,0,0,1"]
     list $lines "bigcoord:$v"
 }
+# ::fuzz::M_word -- Inserts a record word that names a post handler or a Tcl command.
 proc ::fuzz::M_word {lines canary} {
     variable handlerWords
     variable plainWords
@@ -341,6 +363,7 @@ proc ::fuzz::M_word {lines canary} {
     set w [Pick $plainWords]
     list [Insert $lines $w] "plainword:$w"
 }
+# ::fuzz::M_payload -- Inserts a record carrying a Tcl or shell payload aimed at the canary.
 proc ::fuzz::M_payload {lines canary} {
     set p [Payload $canary]
     set text [Pick [list $p PPRINT/$p INSERT/$p PARTNO/$p "TOOL PATH/$p,TOOL,$p" \
@@ -348,11 +371,13 @@ proc ::fuzz::M_payload {lines canary} {
         "SPINDL/RPM,$p,CLW" "CYCLE/$p"]]
     list [Insert $lines $text] payload
 }
+# ::fuzz::M_value -- Inserts a record with a value no control accepts or an edge case.
 proc ::fuzz::M_value {lines canary} {
     variable valueRecords
     set r [Pick $valueRecords]
     list [Insert $lines $r] "value:$r"
 }
+# ::fuzz::M_empty -- Makes the file empty or comments only.
 proc ::fuzz::M_empty {lines canary} {
     list [Pick [list {} {{$$ only a comment}} {{} {} {}} {PAINT/PATH}]] empty
 }
@@ -592,22 +617,31 @@ proc ::fuzz::Classify {c} {
         lappend classes stacktrace
     }
     set allowed {in.cls m.tcl}
-    if {$status eq "0" && [dict get $c mode] eq "file"} {lappend allowed out.nc}
+    # where a successful run put the program (custom: the -o of its args)
+    set ncFile ""
+    if {[dict get $c mode] eq "file"} {
+        set ncFile out.nc
+    } elseif {[set at [lsearch -exact [dict get $c cmd] -o]] >= 0} {
+        set ncFile [lindex [dict get $c cmd] $at+1]
+    }
+    if {$status eq "0" && $ncFile ne ""} {lappend allowed $ncFile}
     set stray [lmap f $files {if {$f in $allowed || $f eq "CANARY"} continue; set f}]
     if {[dict get $c timedOut]} {
         lappend classes timeout
     } elseif {$status eq "0"} {
         set R(outcome,$id) posted
         set nc [dict get $c out]
-        if {[dict get $c mode] eq "file"} {
-            set nc [expr {[file exists [file join $dir out.nc]] ? [ReadBytes [file join $dir out.nc]] : ""}]
+        if {$ncFile ne ""} {
+            set path [file join $dir $ncFile]
+            set nc [expr {[file isfile $path] ? [ReadBytes $path] : ""}]
         }
         lappend classes {*}[CheckNc $c $nc $err]
     } elseif {$status eq "1"} {
         set R(outcome,$id) refused
         if {"out.nc" in $files} {lappend classes partial}
         set last [lindex [split [string trimright $err \n] \n] end]
-        if {[string match "*internal error*" $last]} {
+        variable badMessages
+        if {[string match "*internal error*" $last] || [regexp $badMessages $last]} {
             lappend classes internal
         } elseif {![regexp {^(in\.cls|<stdin>):\d+: \S} $last]
                 && ![regexp {^replay: \S} $last]
@@ -636,17 +670,16 @@ proc ::fuzz::CheckNc {c nc err} {
     set code [lmap l $lines {regsub -all {\([^)]*\)} $l ""}]
     set text [join $code \n]
     if {[regexp -nocase {[A-Z][-+]?(nan|inf)} $text]} {lappend classes nonfinite}
-    # numbers: finite, within the travel and rotary limits
+    # axis words: finite, within the travel and rotary limits
     if {[catch {fivax::machine load [dict get $c machine]} m]} {set m ""}
-    set values {}
-    foreach {- letter value} [regexp -all -inline {([A-Z])([-+]?[0-9]*\.?[0-9]+)} $text] {
+    foreach {- letter value} [regexp -all -inline {([A-EU-Z])([-+]?[0-9]*\.?[0-9]+)} $text] {
         if {![string is double -strict $value] || abs($value) >= 1e7} {
             lappend classes limits
             break
         }
         if {$m ne ""} {
             if {$letter ni {X Y Z}} {set value [fivax::num rad $value]}
-            if {$letter ni {F S T H D N O P G M} && [llength [fivax::machine outside $m [list $letter $value]]]} {
+            if {$letter ne "D" && [llength [fivax::machine outside $m [list $letter $value]]]} {
                 lappend classes limits
                 break
             }
@@ -713,6 +746,7 @@ proc ::fuzz::Known {c class err} {
             if {[regexp {domain error|integer value too large|normalise a zero vector|floating-point value too large|too large to represent} $err]} {
                 return internal
             }
+            if {[regexp {can't read "mom_[a-z_]+(\(\d+\))?": no such variable} $err]} {return unset}
             if {[string match "*word:*" $tags]} {return dispatch}
         }
         timeout {
@@ -749,7 +783,7 @@ proc ::fuzz::Record {c classes} {
         if {![dict exists $R(examples) $k]} {
             dict set R(examples) $k [Describe $c $classes]
         }
-        if {[dict get $R(known) $k] <= 20} {Keep $c known-$k}
+        if {[dict get $R(known) $k] <= 20} {Keep $c known-$k $classes}
     }
     if {![dict get $c timedOut] && [dict get $c ms] > $R(slowest)} {
         set R(slowest) [dict get $c ms]
@@ -757,7 +791,7 @@ proc ::fuzz::Record {c classes} {
     if {[llength $new]} {
         incr R(new)
         lappend R(failures) [Describe $c $new]
-        Keep $c new
+        Keep $c new $new
     }
     if {$R(verbose)} {
         puts [format "case %d: %s %s %s" $id $R(outcome,$id) [dict get $c tags] $classes]
@@ -777,8 +811,8 @@ proc ::fuzz::Describe {c classes} {
         [lrange [dict get $c cmd] 2 end] [string range $last 0 300]
 }
 
-# ::fuzz::Keep -- Copies case c's files into R(keep)/c<id>-<what> when -keep is set.
-proc ::fuzz::Keep {c what} {
+# ::fuzz::Keep -- Copies case c (with classes) into R(keep)/c<id>-<what> when -keep is set.
+proc ::fuzz::Keep {c what classes} {
     variable R
     if {$R(keep) eq ""} return
     set to [file join $R(keep) c[dict get $c id]-$what]
@@ -787,7 +821,7 @@ proc ::fuzz::Keep {c what} {
         catch {file copy -force $f $to}
     }
     catch {file copy -force [dict get $c err] [file join $to stderr.txt]}
-    WriteBytes [file join $to case.txt] "[Describe $c {}]\n"
+    WriteBytes [file join $to case.txt] "[Describe $c $classes]\n"
 }
 
 # ::fuzz::Report -- Prints the summary; returns the exit status (1 with new failures).
