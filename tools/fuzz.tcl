@@ -646,7 +646,7 @@ proc ::fuzz::Classify {c} {
         } elseif {![regexp {^(in\.cls|<stdin>):\d+: \S} $last]
                 && ![regexp {^replay: \S} $last]
                 && !([string match "*machine:*" [dict get $c tags]] && [regexp {^\S*m\.tcl: \S} $last])
-                && !([string match "*args:*" [dict get $c tags]] && [regexp {^\S+: (machine file not found|cannot read)} $last])} {
+                && !([string match "*args:*" [dict get $c tags]] && [regexp {^(\S+: (machine file not found|cannot read)|usage: )} $last])} {
             lappend classes noplace
         }
         lappend classes {*}[CheckWords $c $err]
@@ -667,7 +667,13 @@ proc ::fuzz::CheckNc {c nc err} {
     set classes {}
     set nc [encoding convertfrom utf-8 $nc]
     set lines [split [string trimright $nc \n] \n]
-    set code [lmap l $lines {regsub -all {\([^)]*\)} $l ""}]
+    # INSERT records go out verbatim (the CAM's own text): not checked
+    set cl [ReadBytes [file join [dict get $c dir] in.cls]]
+    set inserts [lmap {- t} [regexp -all -inline -line {^\s*INSERT\s*/(.*)$} [encoding convertfrom utf-8 $cl]] {string trim $t}]
+    set code [lmap l $lines {
+        if {[regsub {^N\d+ } $l ""] in $inserts} continue
+        regsub -all {\([^)]*\)} $l ""
+    }]
     set text [join $code \n]
     if {[regexp -nocase {[A-Z][-+]?(nan|inf)} $text]} {lappend classes nonfinite}
     # axis words: finite, within the travel and rotary limits
@@ -686,10 +692,10 @@ proc ::fuzz::CheckNc {c nc err} {
         }
     }
     # one program: % first and last, one end
-    set pct [llength [lsearch -all -exact $lines %]]
+    set pct [llength [lsearch -all -exact $code %]]
     set ends [llength [lsearch -all -regexp $code {\mM(30|02|2)\M}]]
     set starts [llength [lsearch -all -regexp $code {\mG2[01] G90\M}]]
-    if {$pct != 2 || [lindex $lines 0] ne "%" || [lindex $lines end] ne "%" || $ends != 1 || $starts != 1
+    if {$pct != 2 || [lindex $code 0] ne "%" || [lindex $code end] ne "%" || $ends != 1 || $starts != 1
             || ![regexp {\mM(30|0?2)\M} [lindex $code end-1]]} {
         lappend classes lifecycle
     }
@@ -697,9 +703,12 @@ proc ::fuzz::CheckNc {c nc err} {
     if {[regexp {\mF-?0*\.?0*(\s|$)|\mF-|\mS-|\mS0*\.?0*(\s|$)|\mT-|\mH-|\mD-} $text]} {
         lappend classes values
     }
-    # a DELAY is written as G4
-    set cl [ReadBytes [file join [dict get $c dir] in.cls]]
-    if {[regexp -line {^\s*DELAY\s*/\s*[0-9]*\.?[0-9]+\s*$} $cl] && ![regexp {\mG0?4\M} $text]} {
+    # a DELAY of a positive time is written as G4
+    set dwell 0
+    foreach {- t} [regexp -all -inline -line {^\s*DELAY\s*/\s*([0-9]*\.?[0-9]+)\s*$} $cl] {
+        if {$t > 0} {set dwell 1}
+    }
+    if {$dwell && ![regexp {\mG0?4\M} $text]} {
         lappend classes dwell
     }
     lappend classes {*}[CheckWords $c $err]
@@ -746,8 +755,8 @@ proc ::fuzz::Known {c class err} {
             if {[regexp {domain error|integer value too large|normalise a zero vector|floating-point value too large|too large to represent} $err]} {
                 return internal
             }
-            if {[regexp {can't read "mom_[a-z_]+(\(\d+\))?": no such variable} $err]} {return unset}
             if {[string match "*word:*" $tags]} {return dispatch}
+            if {[regexp {can't read "mom_[a-z_]+(\(\d+\))?": no such variable} $err]} {return unset}
         }
         timeout {
             variable hangTags

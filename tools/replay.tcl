@@ -32,7 +32,7 @@ namespace eval ::replay {
     variable root [file dirname [file dirname [file normalize [info script]]]]
     # Options of the command line only; the others are the job settings.
     variable cliOptions {
-        {-o text {} FILE "output NC file (default: standard output)"}
+        {-o text {} FILE "output NC file (default, or -: standard output)"}
         {-quiet bool 0 "" "no summary and no progress line on standard error"}
         {-help bool 0 "" "print this help"}
     }
@@ -445,7 +445,7 @@ proc ::replay::main {argv} {
     CheckInput $clsf
     CheckMachine $settings
     set target ""
-    if {[dict get $opts -o] ne ""} {
+    if {[dict get $opts -o] ni {"" -}} {
         set target [CheckTarget [dict get $opts -o] $clsf $machineFile]
     }
     Say "fivax: posting for machine [file normalize $machineFile]"
