@@ -55,13 +55,17 @@ proc ::fivax::clsf::channel {chan name} {
 oo::class create ::fivax::clsf::Reader {
     # chan, name (for messages), line (last physical line handed out), own
     # (1: close chan on destroy), saved (the channel's configuration to
-    # restore), lines and idx (decoded physical lines of the current chunk
-    # and the next one to hand out), carry (bytes after the chunk's last
-    # line end), bytes (bytes read so far), eof, skip (1: dropping the rest
-    # of an over-long line), partStart and partBytes (where the current
-    # chunk of lines starts in the input, and its length in bytes), count
-    # (records handed out).
-    variable chan name line own saved lines idx carry bytes eof skip partStart partBytes count
+    # restore), lines and idx (the decoded physical lines of the current
+    # chunk, ended by the sentinel NUL, and the next one to hand out; a
+    # refused line is NUL, the error detail, a space and the reason), carry
+    # (bytes after the chunk's last line end), bytes (bytes read so far),
+    # eof, skip (1: dropping the rest of an over-long line), partStart and
+    # partBytes (where the chunk starts in the input, and its length in
+    # bytes), count (records handed out), progress and tick (the progress
+    # command when the reader was made, and the count it runs at next).
+    # (The hot path of next uses few of them: each costs on every call.)
+    variable chan name line own saved lines idx carry bytes eof skip partStart partBytes \
+        count progress tick
 
     constructor {aChan aName aOwn} {
         set chan $aChan
@@ -70,7 +74,7 @@ oo::class create ::fivax::clsf::Reader {
         set own $aOwn
         set saved [dict filter [chan configure $chan] key -blocking -translation -encoding]
         chan configure $chan -translation binary -blocking 0
-        set lines {}
+        set lines [list \0]
         set idx 0
         set carry ""
         set bytes 0
@@ -79,6 +83,8 @@ oo::class create ::fivax::clsf::Reader {
         set partStart 0
         set partBytes 0
         set count 0
+        set progress $::fivax::clsf::progress
+        set tick [expr {$progress eq "" ? Inf : $::fivax::clsf::progressEvery}]
     }
 
     destructor {
@@ -93,57 +99,39 @@ oo::class create ::fivax::clsf::Reader {
     # Returns {line bytes}: the last physical line handed out and about
     # how many bytes of the input it ends at (for progress reports).
     method position {} {
-        set n [llength $lines]
-        set at [expr {$n ? $partStart + $partBytes * $idx / $n : $bytes - [string length $carry]}]
-        list $line $at
+        set n [expr {[llength $lines] - 1}]
+        if {$n <= 0} {return [list $line [expr {$bytes - [string length $carry]}]]}
+        list $line [expr {$partStart + $partBytes * min($idx, $n) / $n}]
     }
 
     # Returns the next record dict, or {} at end of file. Joins "$"
     # continuations, drops "$$" comments, blank lines and PAINT. After an
     # error the reader stays usable: the bad record is consumed.
     method next {} {
-        namespace upvar ::fivax::clsf maxLine maxLine maxRecord maxRecord \
-            progress progress progressEvery every
         set n $line
         while {1} {
-            if {$idx >= [llength $lines] && ![my Fill]} break
             set text [lindex $lines $idx]
             incr idx
-            set first [incr n]
-            if {[string length $text] > $maxLine || [string index $text 0] eq "\0"} {
-                set line $n
-                my Refuse $text $first
-            }
-            if {[string first "\$" $text] >= 0} {
-                # A single trailing $ continues the record (comments included).
-                set text [string trimright $text]
-                while {[string index $text end] eq "\$"
-                        && [string index $text end-1] ne "\$"} {
-                    set text [string range $text 0 end-1]
-                    if {$idx >= [llength $lines] && ![my Fill]} break
-                    set more [lindex $lines $idx]
-                    incr idx
-                    incr n
-                    if {[string length $more] > $maxLine || [string index $more 0] eq "\0"} {
-                        set line $n
-                        my Refuse $more $n
-                    }
-                    append text " " [string trimright $more]
-                    if {[string length $text] > $maxRecord} {
-                        set line [my SkipContinuations $more $n]
-                        ::fivax::Fail CLSF LINE "$name:$first: record longer than\
-                            $maxRecord characters (continued to line $n)"
-                    }
+            if {[string index $text 0] eq "\0"} {
+                # the end of the chunk, or a refused line
+                if {$text eq "\0"} {
+                    if {[my Fill]} continue
+                    break
                 }
-                set c [string first "\$\$" $text]
-                if {$c >= 0} {set text [string range $text 0 [expr {$c - 1}]]}
+                set line [incr n]
+                my Refuse $text $n
+            }
+            set first [incr n]
+            if {[string first "\$" $text] >= 0} {
+                set text [my Join $text $first n]
             }
             set text [string trim $text]
             if {$text eq ""} {continue}
             set line $n
             set rec [::fivax::clsf::parse $text $name $first]
             if {[dict size $rec]} {
-                if {[incr count] % $every == 0 && $progress ne ""} {
+                if {[incr count] >= $tick} {
+                    incr tick $::fivax::clsf::progressEvery
                     {*}$progress $count {*}[my position]
                 }
                 return $rec
@@ -153,14 +141,49 @@ oo::class create ::fivax::clsf::Reader {
         return {}
     }
 
-    # Raises the error of the physical line lineNo: too long, or refused
-    # while read (text is then a refusal: NUL, the error detail, a space,
-    # the reason; see ::fivax::clsf::Decode).
-    method Refuse {text lineNo} {
-        namespace upvar ::fivax::clsf maxLine maxLine
-        if {[string index $text 0] ne "\0"} {
-            set text "\0LINE line longer than $maxLine characters"
+    # Returns text (the first physical line of a record, at line first)
+    # joined with the lines it continues to: a single trailing $ continues
+    # the record (comments included); drops a "$$" comment. nVar names the
+    # caller's line counter, advanced over the lines joined.
+    method Join {text first nVar} {
+        upvar 1 $nVar n
+        set maxRecord $::fivax::clsf::maxRecord
+        set text [string trimright $text]
+        while {[string index $text end] eq "\$" && [string index $text end-1] ne "\$"} {
+            set text [string range $text 0 end-1]
+            if {![my Physical more]} break
+            incr n
+            if {[string index $more 0] eq "\0"} {
+                set line $n
+                my Refuse $more $n
+            }
+            append text " " [string trimright $more]
+            if {[string length $text] > $maxRecord} {
+                set line [my SkipContinuations $more $n]
+                ::fivax::Fail CLSF LINE "$name:$first: record longer than\
+                    $maxRecord characters (continued to line $n)"
+            }
         }
+        set c [string first "\$\$" $text]
+        if {$c >= 0} {set text [string range $text 0 [expr {$c - 1}]]}
+        return $text
+    }
+
+    # Sets the caller's variable var to the next physical line (a refusal
+    # included); returns 0 at the end of the input.
+    method Physical {var} {
+        upvar 1 $var text
+        while {1} {
+            set text [lindex $lines $idx]
+            incr idx
+            if {$text ne "\0"} {return 1}
+            if {![my Fill]} {return 0}
+        }
+    }
+
+    # Raises the error of the refused physical line lineNo (text: NUL, the
+    # error detail, a space and the reason; see ::fivax::clsf::Decode).
+    method Refuse {text lineNo} {
         regexp {^\0(\S+) (.*)$} $text -> detail why
         ::fivax::Fail CLSF $detail "$name:$lineNo: $why"
     }
@@ -169,22 +192,26 @@ oo::class create ::fivax::clsf::Reader {
     # (line lineNo) is text, without keeping it; returns the last line number.
     method SkipContinuations {text lineNo} {
         while {[string index $text end] eq "\$" && [string index $text end-1] ne "\$"} {
-            if {$idx >= [llength $lines] && ![my Fill]} break
-            set text [string trimright [lindex $lines $idx]]
-            incr idx
+            if {![my Physical text]} break
+            set text [string trimright $text]
             incr lineNo
         }
         return $lineNo
     }
 
     # Reads the next chunk of complete lines into lines (decoded, line ends
-    # removed); returns 0 at end of input. Memory stays bounded: an
-    # over-long line is replaced by a refusal and its rest skipped.
+    # removed, the sentinel after them); returns 0 at end of input. Memory
+    # stays bounded: a line over maxLine characters is replaced by a
+    # refusal, and the rest of one that has no end yet is skipped.
     method Fill {} {
-        namespace upvar ::fivax::clsf maxLine maxLine chunk chunk
+        namespace upvar ::fivax::clsf chunk chunk maxLine maxLine
         while {1} {
             if {$eof} {
-                if {$carry eq ""} {return 0}
+                if {$carry eq ""} {
+                    set lines [list \0]
+                    set idx 0
+                    return 0
+                }
                 set part $carry
                 set partStart [expr {$bytes - [string length $carry]}]
                 set partBytes [string length $carry]
@@ -226,7 +253,7 @@ oo::class create ::fivax::clsf::Reader {
                         set skip 1
                         set why [::fivax::clsf::Control [string range $carry 0 $maxLine]]
                         if {$why eq ""} {set why "LINE line longer than $maxLine characters"}
-                        set lines [list "\0$why"]
+                        set lines [list "\0$why" \0]
                         set carry ""
                         set idx 0
                         return 1
@@ -243,8 +270,17 @@ oo::class create ::fivax::clsf::Reader {
                 set carry [string range $carry [expr {$cut + 1}] end]
             }
             set lines [::fivax::clsf::Decode $part]
+            if {[string length $part] > $maxLine} {
+                set lines [lmap text $lines {
+                    if {[string length $text] > $maxLine} {
+                        set text "\0LINE line longer than $maxLine characters"
+                    }
+                    set text
+                }]
+            }
+            lappend lines \0
             set idx 0
-            if {[llength $lines]} {return 1}
+            if {[llength $lines] > 1} {return 1}
         }
     }
 }
@@ -254,16 +290,17 @@ namespace eval ::fivax::clsf {
     # in characters; bytes read per chunk.
     variable maxLine 65536
     variable maxRecord 65536
-    variable chunk 65536
+    variable chunk 60000
     # The progress command (see progress) and how many records apart it runs.
     variable progress ""
     variable progressEvery 256
 }
 
 # ::fivax::clsf::progress --
-#	Sets the command prefix every reader calls every 256 records with the
-#	records it has read, its line and about the bytes read to it (for a
-#	progress display); "" (the default) turns it off. Returns the previous one.
+#	Sets the command prefix that readers made from now on call every 256
+#	records with the records read, the line and about the bytes read to it
+#	(for a progress display); "" (the default) turns it off. Returns the
+#	previous one.
 proc ::fivax::clsf::progress {cmd} {
     variable progress
     set old $progress
