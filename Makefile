@@ -3,26 +3,40 @@ TCLSH ?= tclsh
 DEMO_MACHINE ?= machines/hh-tilt45.tcl
 DEMO_CL ?= tests/data/demo-5ax.cls
 
-.PHONY: all deps test demo bench fuzz clean
+.PHONY: all deps test demo docs bench fuzz clean
 
 all: test
 
-# Installs tcllib (Debian package) when Tcl cannot load it.
+# Installs tcllib and tdom (Debian packages; tdom parses the SVG plots in
+# the tests) when Tcl cannot load them.
 # (tclsh reading a script from stdin exits 0 on errors: exit 1 explicitly.)
-HAVE_DEPS = echo 'exit [catch {package require cmdline; package require tcltest 2.5}]' | $(TCLSH)
+HAVE_DEPS = echo 'exit [catch {package require cmdline; package require tcltest 2.5; package require tdom}]' | $(TCLSH)
 
 deps:
-	@$(HAVE_DEPS) || { echo "installing tcllib"; \
-	    (apt-get install -y tcllib || (apt-get update && apt-get install -y tcllib)) >/dev/null; }
-	@$(HAVE_DEPS) || { echo "tcllib is missing and could not be installed"; exit 1; }
+	@$(HAVE_DEPS) || { echo "installing tcllib tdom"; \
+	    (apt-get install -y tcllib tdom || (apt-get update && apt-get install -y tcllib tdom)) >/dev/null; }
+	@$(HAVE_DEPS) || { echo "tcllib or tdom is missing and could not be installed"; exit 1; }
 
 test: deps
 	$(TCLSH) tests/all.tcl
 
+# Replay, then the verifier on the written file, then the plots.
 demo: deps
 	@mkdir -p out
 	$(TCLSH) tools/replay.tcl -machine $(DEMO_MACHINE) -o out/demo.nc $(DEMO_CL)
 	@echo "NC program written to out/demo.nc"
+	$(TCLSH) tools/verify.tcl -machine $(DEMO_MACHINE) -cl $(DEMO_CL) -csv out/demo-verify.csv -svg out/demo out/demo.nc
+	$(TCLSH) tools/kinerr.tcl -machine $(DEMO_MACHINE) -d B=0.01 -d C=0.02 -csv out/demo-kinerr.csv -svg out/demo-kinerr.svg out/demo.nc
+
+# The README's pictures (docs/*.svg): the surface paper's path on the
+# TTR-TR machine, posted, verified and its rotary-axis error.
+docs: deps
+	@mkdir -p out docs
+	$(TCLSH) tools/surfpath.tcl -surface paper -D 6 -r 2 -lead 25 -tilt 5 -stepover 5 -step 1 -along v -o out/paper.cls -svg docs/surfpath-paper.svg
+	$(TCLSH) tools/replay.tcl -quiet -machine machines/ttr-tr.tcl -o out/paper-ttr.nc out/paper.cls
+	$(TCLSH) tools/verify.tcl -machine machines/ttr-tr.tcl -cl out/paper.cls -svg docs/verify-ttr out/paper-ttr.nc
+	@rm -f docs/verify-ttr-axes.svg docs/verify-ttr-path.svg
+	$(TCLSH) tools/kinerr.tcl -machine machines/ttr-tr.tcl -d B=0.01 -d C=0.02 -svg docs/kinerr-ttr.svg out/paper-ttr.nc
 
 # Speed figures on a generated 200k-point file, beside tools/bench-baseline.txt
 # (BENCH_ARGS: e.g. -points 20000, -noreplay, -save).

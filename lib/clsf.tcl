@@ -13,6 +13,7 @@
 #	  COUNT   wrong number of numbers for the record
 #	  AXIS    a direction whose length differs from 1 by more than 1e-3
 #	  WORD    missing, unknown or misplaced minor word
+#	  RANGE   a value outside its range (KNOT values in (0,1], ascending)
 #	  TEXT    a control character (NUL included) or bytes that are not UTF-8
 #	  LINE    a physical line or a record longer than 65536 characters
 
@@ -411,6 +412,9 @@ proc ::fivax::clsf::parse {text file line} {
         CYCLE       {return [ParseCycle $rest $file $line]}
         UNITS - UNIT {return [ParseUnits $major $rest $file $line]}
         MULTAX      {return [ParseMultax $rest $file $line]}
+        NURBS       {return [ParseNurbs $rest $file $line]}
+        KNOT        {return [ParseKnot $rest $file $line]}
+        CNTRL       {return [ParseCntrl $rest $file $line]}
         default     {return [ParseOther $major $text $rest $file $line]}
     }
 }
@@ -843,6 +847,51 @@ proc ::fivax::clsf::ParseMultax {rest file line} {
         ::fivax::Fail CLSF WORD "$file:$line: MULTAX: expected ON or OFF, got [Quote $w]"
     }
     dict create kind MULTAX file $file line $line state $w
+}
+
+# NX spline moves: NURBS/ starts one, then KNOT/ records (the knot values)
+# and CNTRL/ records (the control points) follow; ::fivax::curve::clsfNurbs
+# documents how they make a curve with the current position.
+
+# ::fivax::clsf::ParseNurbs -- Returns a NURBS record; NURBS/ takes no arguments.
+proc ::fivax::clsf::ParseNurbs {rest file line} {
+    if {[string trim $rest] ne ""} {
+        ::fivax::Fail CLSF COUNT \
+            "$file:$line: NURBS: expected no arguments, got [Quote [string trim $rest]]"
+    }
+    dict create kind NURBS file $file line $line
+}
+
+# ::fivax::clsf::ParseKnot --
+#	Returns a KNOT record: knots, the list of its values (at least one,
+#	each in (0,1], ascending or equal).
+proc ::fivax::clsf::ParseKnot {rest file line} {
+    set toks [Tokens $rest]
+    if {![llength $toks]} {
+        ::fivax::Fail CLSF COUNT "$file:$line: KNOT: expected at least 1 number, got 0"
+    }
+    set knots [Nums $toks $file $line KNOT]
+    set prev 0.0
+    foreach k $knots t $toks {
+        if {!($k > 0.0 && $k <= 1.0)} {
+            ::fivax::Fail CLSF RANGE "$file:$line: KNOT: [Quote $t] is not in (0,1]"
+        }
+        if {$k < $prev} {
+            ::fivax::Fail CLSF RANGE "$file:$line: KNOT: [Quote $t] is less than the value before it"
+        }
+        set prev $k
+    }
+    dict create kind KNOT file $file line $line knots $knots
+}
+
+# ::fivax::clsf::ParseCntrl -- Returns a CNTRL record (point) from CNTRL/x,y,z.
+proc ::fivax::clsf::ParseCntrl {rest file line} {
+    set toks [Tokens $rest]
+    if {[llength $toks] != 3} {
+        ::fivax::Fail CLSF COUNT \
+            "$file:$line: CNTRL: expected 3 numbers, got [llength $toks]"
+    }
+    dict create kind CNTRL file $file line $line point [Nums $toks $file $line CNTRL]
 }
 
 # ::fivax::clsf::ParseOther --

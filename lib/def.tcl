@@ -60,8 +60,8 @@ proc ::fivax::def::parse {text {name <def>}} {
 
 # ::fivax::def::configure --
 #	Defines every ADDRESS of defDict on the nc Writer writer (format resolved through
-#	FORMATs; plain LEADER/TRAILER strings copied, bracketed ones left for the
-#	runtime), and copies the word separator, end of line and SEQUENCE
+#	FORMATs; MIN/MAX with their actions; plain LEADER/TRAILER strings copied,
+#	bracketed ones left for the runtime), and copies the word separator, end of line and SEQUENCE
 #	numbers. Returns the address names configured.
 #	Errors: {FIVAX DEF FORMAT} when an address names an unknown FORMAT.
 proc ::fivax::def::configure {writer defDict} {
@@ -88,6 +88,10 @@ proc ::fivax::def::configure {writer defDict} {
         set args [list -format [dict get $formats $fname]]
         set force [string tolower [DictOr $a force off]]
         lappend args -force [expr {$force eq "always" ? "always" : "off"}]
+        foreach key {min max} {
+            set v [DictOr $a $key ""]
+            lappend args -$key [expr {$v eq "" ? {} : [list $v [DictOr $a ${key}_action ""]]}]
+        }
         set isNew [expr {![$writer has $addr]}]
         foreach {key opt} {leader -leader trailer -trailer} {
             if {[DictOr $a ${key}_expr ""] eq ""} {

@@ -7,7 +7,7 @@
 #	    clsf               CL file reader             (replay's host side)
 #	    mom def            NX's MOM runtime, .def files (replay's host side)
 #	    machine kin        machine files, kinematics
-#	    curve motion/      CL path geometry, the planner
+#	    curve plane motion/  CL path geometry, work-plane frames, the planner
 #	    nc output          blocks, the dialect output layer
 #	    verify             checking written blocks
 #	    settings           the option table of a posting job
@@ -29,8 +29,8 @@ foreach ::fivax::File {
     num.tcl opts.tcl vec.tcl
     clsf.tcl mom.tcl def.tcl
     machine.tcl kin.tcl
-    curve.tcl motion/plan.tcl motion/candidates.tcl motion/moves.tcl
-    motion/linearise.tcl motion/feeds.tcl
+    curve.tcl plane.tcl motion/plan.tcl motion/candidates.tcl motion/moves.tcl
+    motion/linearise.tcl motion/feeds.tcl motion/holes.tcl motion/frames.tcl
     nc.tcl output.tcl
     verify.tcl
     settings.tcl

@@ -10,8 +10,10 @@
 #
 #	Conventions (chain = machine dict 'chain', forward order): axis 1 is the
 #	tool-side (tilt) axis, axis 2 the azimuth axis. Joint vectors are
-#	{X Y Z q1 q2}. With R(u, a) the right-hand rotation about unit u and
-#	th_i = s_i q_i (s_i the axis sense), every machine kind satisfies
+#	{X Y Z q1 q2} in the machine's own (written) values. With R(u, a) the
+#	right-hand rotation about unit u and th_i = s_i (q_i - z_i) (s_i the
+#	axis sense, z_i its zero offset: the written value at the zero pose,
+#	machine file key 'offset'), every machine kind satisfies
 #
 #	    t = R(u2, th2) R(u1, th1) Z                                  (O)
 #
@@ -25,7 +27,7 @@
 #	Errors: {FIVAX KIN <DETAIL>}.
 
 namespace eval ::fivax::kin {
-    namespace export model forward orientations position interpolationError
+    namespace export model forward orientations position interpolationError toolInMachine
     namespace ensemble create -prefixes 0
     namespace upvar ::fivax::num pi pi
 
@@ -79,7 +81,10 @@ proc ::fivax::kin::model {machine toolLength {tableOffset ""}} {
         dict set m p$i $p
         dict set m s$i [dict get $ax sense]
         dict set m side$i [dict get $ax side]
-        lappend geo $ux $uy $uz {*}$p [expr {double([dict get $ax sense])}]
+        set z 0.0
+        if {[dict exists $ax offset]} {set z [expr {double([dict get $ax offset])}]}
+        dict set m z$i $z
+        lappend geo $ux $uy $uz {*}$p [expr {double([dict get $ax sense])}] $z
     }
     dict set m names $names
     set kc [dict get {headhead 0 headtable 1 tabletable 2} [dict get $machine kind]]
@@ -112,7 +117,8 @@ proc ::fivax::kin::model {machine toolLength {tableOffset ""}} {
     set zpn [expr {$zpx * $nx + $zpy * $ny + $zpz * $nz}]
     dict set m ori [list $x1 $y1 $z1 $x2 $y2 $z2 $nx $ny $nz $w $nn [expr {sqrt($nn)}] \
                         $k1 $dP $dM $m1u2 $m1n $zpu2 $zpn \
-                        [expr {double([dict get $m s1])}] [expr {double([dict get $m s2])}]]
+                        [expr {double([dict get $m s1])}] [expr {double([dict get $m s2])}] \
+                        [dict get $m z1] [dict get $m z2]]
     return $m
 }
 
@@ -121,11 +127,11 @@ proc ::fivax::kin::model {machine toolLength {tableOffset ""}} {
 #	joint vector {X Y Z q1 q2} (kinematics.md section 2).
 proc ::fivax::kin::forward {model joints} {
     lassign $joints X Y Z q1 q2
-    lassign [dict get $model geo] kc ux1 uy1 uz1 px1 py1 pz1 s1 ux2 uy2 uz2 px2 py2 pz2 s2
-    set a [expr {$s1 * $q1}]
+    lassign [dict get $model geo] kc ux1 uy1 uz1 px1 py1 pz1 s1 z1 ux2 uy2 uz2 px2 py2 pz2 s2 z2
+    set a [expr {$s1 * ($q1 - $z1)}]
     set c1 [expr {cos($a)}]
     set n1 [expr {sin($a)}]
-    set a [expr {$s2 * $q2}]
+    set a [expr {$s2 * ($q2 - $z2)}]
     set c2 [expr {cos($a)}]
     set n2 [expr {sin($a)}]
     # v: the point entering axis 1, relative to p1
@@ -162,6 +168,22 @@ proc ::fivax::kin::forward {model joints} {
              [expr {$tz * $c2 + ($ux2 * $ty - $uy2 * $tx) * $n2 + $uz2 * $k}]]
 }
 
+# ::fivax::kin::toolInMachine --
+#	Returns the tool direction in the machine frame at rotaries {q1 q2}:
+#	turned by the head axes only (table axes turn the part, not the tool),
+#	so always Z on a table-table machine.
+proc ::fivax::kin::toolInMachine {model q} {
+    lassign $q q1 q2
+    lassign [dict get $model geo] kc ux1 uy1 uz1 - - - s1 ux2 uy2 uz2 - - - s2
+    set t {0.0 0.0 1.0}
+    if {$kc == 2} {return $t}
+    set t [::fivax::vec::rotate [list $ux1 $uy1 $uz1] [expr {$s1 * $q1}] $t]
+    if {$kc == 0} {
+        set t [::fivax::vec::rotate [list $ux2 $uy2 $uz2] [expr {$s2 * $q2}] $t]
+    }
+    return $t
+}
+
 # ::fivax::kin::orientations --
 #	Returns {status sols} for the tool axis t (normalised here): 'regular'
 #	with one or two {q1 q2} (radians in (-pi, pi]), 'singular' (t along the
@@ -191,7 +213,7 @@ proc ::fivax::kin::orientations {model t} {
         set tx [expr {$tx / $tn}]; set ty [expr {$ty / $tn}]; set tz [expr {$tz / $tn}]
     }
     lassign [dict get $model ori] x1 y1 z1 x2 y2 z2 nx ny nz w nn sqnn \
-        k1 dP dM m1u2 m1n zpu2 zpn s1 s2
+        k1 dP dM m1u2 m1n zpu2 zpn s1 s2 o1 o2
     set h [expr {$x2 * $tx + $y2 * $ty + $z2 * $tz}]
     # e = t x u2, r = |e| = |t_perp|
     set ex [expr {$ty * $z2 - $tz * $y2}]
@@ -208,9 +230,10 @@ proc ::fivax::kin::orientations {model t} {
     if {$D < -$edgeTol} {return {unreachable {}}}
     set b [expr {($h - $w * $k1) / $nn}]
     if {$r < $singularTol} {
-        set q [expr {$s1 * atan2($b * $m1u2, $b * $zpu2) + 0.0}]
-        if {$q <= -$pi} {set q [expr {$q + 2.0 * $pi}]}
-        return [list singular [list [list $q 0.0]]]
+        set q [expr {$s1 * atan2($b * $m1u2, $b * $zpu2) + $o1}]
+        if {$q <= -$pi || $q > $pi} {set q [Wrap $q]}
+        set q2 [expr {$o2 <= -$pi || $o2 > $pi ? [Wrap $o2] : $o2}]
+        return [list singular [list [list $q $q2]]]
     }
     set a [expr {$d / $nn}]
     if {$D > $edgeTol} {
@@ -226,10 +249,10 @@ proc ::fivax::kin::orientations {model t} {
     set sols {}
     foreach sg [expr {$g > 0.0 ? {1.0 -1.0} : {1.0}}] {
         set gg [expr {$sg * $g}]
-        set q1 [expr {$s1 * atan2($b * $m1u2 + $gg * $m1n, $b * $zpu2 + $gg * $zpn) + 0.0}]
-        set q2 [expr {$s2 * atan2($a * $ue + $gg * $ne, $a * $ut + $gg * $nt) + 0.0}]
-        if {$q1 <= -$pi} {set q1 [expr {$q1 + 2.0 * $pi}]}
-        if {$q2 <= -$pi} {set q2 [expr {$q2 + 2.0 * $pi}]}
+        set q1 [expr {$s1 * atan2($b * $m1u2 + $gg * $m1n, $b * $zpu2 + $gg * $zpn) + $o1}]
+        set q2 [expr {$s2 * atan2($a * $ue + $gg * $ne, $a * $ut + $gg * $nt) + $o2}]
+        if {$q1 <= -$pi || $q1 > $pi} {set q1 [Wrap $q1]}
+        if {$q2 <= -$pi || $q2 > $pi} {set q2 [Wrap $q2]}
         lappend sols [list $q1 $q2]
     }
     list regular $sols
@@ -241,11 +264,11 @@ proc ::fivax::kin::orientations {model t} {
 proc ::fivax::kin::position {model P q} {
     lassign $P Px Py Pz
     lassign $q q1 q2
-    lassign [dict get $model geo] kc ux1 uy1 uz1 px1 py1 pz1 s1 ux2 uy2 uz2 px2 py2 pz2 s2
-    set a [expr {$s1 * $q1}]
+    lassign [dict get $model geo] kc ux1 uy1 uz1 px1 py1 pz1 s1 z1 ux2 uy2 uz2 px2 py2 pz2 s2 z2
+    set a [expr {$s1 * ($q1 - $z1)}]
     set c1 [expr {cos($a)}]
     set n1 [expr {sin($a)}]
-    set a [expr {$s2 * $q2}]
+    set a [expr {$s2 * ($q2 - $z2)}]
     set c2 [expr {cos($a)}]
     set n2 [expr {sin($a)}]
     if {$kc == 0} {
@@ -356,4 +379,12 @@ proc ::fivax::kin::interpolationError {model j0 j1 P0 P1 t0 t1 {tol Inf} {atol I
         if {$dp > $tol || $dg > $atol} break
     }
     list $dp $dg
+}
+
+# ::fivax::kin::Wrap -- Returns angle a (radians) wrapped into (-pi, pi], never -0.0.
+proc ::fivax::kin::Wrap {a} {
+    variable pi
+    set a [expr {atan2(sin($a), cos($a)) + 0.0}]
+    if {$a <= -$pi} {set a [expr {$a + 2.0 * $pi}]}
+    return $a
 }

@@ -28,10 +28,12 @@ namespace eval ::fivax::machine {
         name {} description {} units mm family chain alpha 0 y_H 0 pivot 0
         tool_length 0 table_offset {0 0 0} axes {} controller fanuc output {}
         clearance 50 safe_z {} feed_min 1 feed_max 20000
-        inverse_time_max 9999 max_swing 180 travel {}
+        inverse_time_max 9999 max_swing 180 work_offset 54 tool_change_z 0
+        home_rotaries 0 entry_feed {} tcp 0 tcp_codes {} swivel_record TC1
+        travel {}
     }
     variable topRequired {name axes}
-    variable axisKeys {side direction point sense min max continuous prefer rollover}
+    variable axisKeys {side direction point sense min max continuous prefer rollover offset}
     # Stand-in for an unlimited continuous axis (radians) or linear travel.
     variable unlimited 1e300
     # Largest magnitude of a length (file units), a rotary limit (deg) and a
@@ -153,6 +155,35 @@ proc ::fivax::machine::parse {text sourceName} {
         ::fivax::Fail MACHINE VALUE "$src: 'feed_min' exceeds 'feed_max'"
     }
     dict set m max_swing [::fivax::num::rad [dict get $m max_swing]]
+    set v [Get $raw work_offset]
+    if {$v ni {54 55 56 57 58 59}} {
+        ::fivax::Fail MACHINE VALUE "$src: 'work_offset' must be 54 to 59 (G54..G59): $v"
+    }
+    dict set m work_offset $v
+    dict set m tool_change_z [Real $src tool_change_z [Get $raw tool_change_z]]
+    set v [Get $raw home_rotaries]
+    if {$v ni {0 1}} {::fivax::Fail MACHINE VALUE "$src: 'home_rotaries' must be 0 or 1: $v"}
+    dict set m home_rotaries $v
+    set v [Get $raw entry_feed]
+    if {$v ne ""} {
+        set v [Real $src entry_feed $v]
+        if {$v <= 0} {::fivax::Fail MACHINE VALUE "$src: 'entry_feed' must be positive: $v"}
+    }
+    dict set m entry_feed $v
+    set v [Get $raw tcp]
+    if {$v ni {0 1}} {::fivax::Fail MACHINE VALUE "$src: 'tcp' must be 0 or 1: $v"}
+    dict set m tcp $v
+    set v [Get $raw tcp_codes]
+    if {!([string is list $v] && ([llength $v] == 0 || ([llength $v] == 2
+            && [string is entier -strict [lindex $v 0]] && [string is entier -strict [lindex $v 1]])))} {
+        ::fivax::Fail MACHINE VALUE "$src: 'tcp_codes' must be {} or two M code numbers {on off}: $v"
+    }
+    dict set m tcp_codes $v
+    set v [Get $raw swivel_record]
+    if {![regexp {^[A-Za-z0-9_]+$} $v]} {
+        ::fivax::Fail MACHINE VALUE "$src: 'swivel_record' must be one word of letters, digits and _: $v"
+    }
+    dict set m swivel_record $v
 
     set output [Get $raw output]
     if {![string is list $output] || [llength $output] % 2} {
@@ -333,6 +364,14 @@ proc ::fivax::machine::ParseAxes {src family axesText alpha yH} {
         if {[dict exists $p prefer]} {
             set prefer [Choice $src prefer [dict get $p prefer] {positive negative none} $what]
         }
+        set offset 0.0
+        if {[dict exists $p offset]} {
+            set offset [::fivax::num::rad [Real $src offset [dict get $p offset] $what]]
+            if {!(abs($offset) <= [::fivax::num::rad 360.0])} {
+                ::fivax::Fail MACHINE VALUE \
+                    "$src: ${what}'offset' must lie within -360..360: [dict get $p offset]"
+            }
+        }
         set lim {}
         variable maxAngle
         foreach key {min max} sign {-1 1} {
@@ -380,7 +419,7 @@ proc ::fivax::machine::ParseAxes {src family axesText alpha yH} {
                           sense [expr {int($sense)}] min [dict get $lim min] \
                           max [dict get $lim max] continuous $continuous \
                           prefer [dict get {positive 1 negative -1 none 0} $prefer] \
-                          rollover $rollover]
+                          rollover $rollover offset $offset]
     }
     if {[llength $axes] != 2} {
         ::fivax::Fail MACHINE AXES \

@@ -2,15 +2,39 @@
 #	NX's MOM runtime, emulated for replay outside NX: CLSF records become
 #	NX events (MOM_start_of_program, MOM_start_of_path, MOM_linear_move,
 #	...) fired into the post's interpreter, with the mom_* globals NX would
-#	set, and the MOM_* commands a post calls. Knows no geometry.
-#	See spec/nx-conventions.md sections 1-3 and 5.5.
+#	set, and the MOM_* commands a post calls. See spec/nx-conventions.md
+#	sections 1-3 and 5.5. What it does as NX does (where the behaviour is
+#	inferred, the comment says so and from what):
+#	- spindle and coolant data of an operation's header are globals at
+#	  MOM_start_of_path; MOM_spindle_rpm / MOM_coolant_on fire after the
+#	  tool change, as user-defined events do;
+#	- the first motion of an operation fires MOM_initial_move (after a tool
+#	  change) or MOM_first_move, with mom_motion_event set to that name;
+#	- cycles fire their activation event (MOM_drill ...) with mom_cycle_*,
+#	  one MOM_<cycle>_move per hole and MOM_cycle_off;
+#	- arcs and helixes come in pieces by the post's mom_kin_arc_output_mode
+#	  and mom_kin_helical_arc_output_mode;
+#	- lengths are converted from the CL's units to the post's
+#	  mom_kin_output_unit;
+#	- only the CL words below reach the post; any other record is a
+#	  warning with FILE:LINE.
 
 namespace eval ::fivax::mom {
     namespace export create
     namespace ensemble create -prefixes 0
     # Record kinds that belong to an operation's header: they are gathered
     # until the first other record, then MOM_start_of_path fires with them.
-    variable headerKinds {TLDATA CUTTER MSYS LOAD SELECT UNITS}
+    variable headerKinds {TLDATA CUTTER MSYS LOAD SELECT UNITS SPINDL COOLNT}
+    # CYCLE words: the NX cycle event of a cycle type and modifier.
+    variable cycleEvents {
+        DRILL drill  DRILL,DEEP drill_deep  DEEP drill_deep
+        DRILL,BRKCHP drill_break_chip  BRKCHP drill_break_chip
+        DRILL,DWELL drill_dwell  TAP tap  BORE bore  BORE,DWELL bore_dwell
+        BORE,DRAG bore_drag  BORE,NODRAG bore_no_drag  BORE,BACK bore_back
+        BORE,MANUAL bore_manual
+    }
+    # mm per length unit of the CL and output units.
+    variable unitLength {MM 1.0 IN 25.4}
     variable Options {
         {-post text {} FILE "the post's event handler file (sourced in the post interpreter)"}
         {-def text {} FILE "the post's .def file (for MOM_do_template)"}
@@ -55,6 +79,126 @@ proc ::fivax::mom::create {args} {
     Runtime new [::fivax::opts::parse $Options $args "mom create"]
 }
 
+# ::fivax::mom::FirstUnit --
+#	Returns the length unit (MM or IN) of the CL file at path as its first
+#	UNITS or FEDRAT record tells (NX's CLSF has no UNITS record: the
+#	feed's unit, IPM or MMPM, tells), MM when neither says.
+proc ::fivax::mom::FirstUnit {path} {
+    set reader [::fivax::clsf::open $path]
+    try {
+        while {[set rec [$reader next]] ne ""} {
+            switch -- [dict get $rec kind] {
+                UNITS {return [expr {[dict get $rec value] eq "INCH" ? "IN" : "MM"}]}
+                FEDRAT {
+                    switch -- [dict get $rec unit] {
+                        IPM - IPR {return IN}
+                        MMPM - MMPR {return MM}
+                    }
+                }
+            }
+        }
+    } finally {
+        $reader destroy
+    }
+    return MM
+}
+
+# ::fivax::mom::CycleParams --
+#	Returns {event params} of a CYCLE record: the NX cycle event (drill,
+#	drill_deep, drill_break_chip, drill_dwell, tap, bore, bore_dwell,
+#	bore_drag, bore_no_drag, bore_back, bore_manual) and the dict of its
+#	mom_cycle_* globals, lengths multiplied by scale. Reads the NX form
+#	(RAPTO r, FEDTO f: signed distances along the tool axis from the hole
+#	top; RTRCTO r|AUTO|MANUAL) and the APT form of Creo and others (CLEAR
+#	c: the R plane c above the top; DEPTH d: the bottom d below it), STEP
+#	s1 ?s2 s3?, DWELL s (seconds) or DWELL,REV,n, and the feed MMPM|IPM|
+#	MMPR|IPR f. A DWELL word makes a drill or bore cycle its dwelling form.
+#	Errors: {FIVAX MOM CYCLE} "FILE:LINE: CYCLE: what" for a word or
+#	cycle it does not know, a missing depth or R plane, or a bottom not
+#	below the R plane: a hole never vanishes silently.
+proc ::fivax::mom::CycleParams {rec scale} {
+    variable cycleEvents
+    set where "[Where $rec]: CYCLE"
+    set type [string toupper [dict get $rec type]]
+    set args [dict get $rec args]
+    set key $type
+    if {[lindex $args 0] in {DEEP BRKCHP DRAG NODRAG BACK MANUAL}} {
+        append key ,[lindex $args 0]
+        set args [lrange $args 1 end]
+    }
+    set p [dict create mom_cycle_type $key mom_cycle_retract_mode MANUAL \
+        mom_cycle_feed_rate "" mom_cycle_feed_rate_mode "" mom_cycle_delay 0.0 \
+        mom_cycle_delay_mode SECONDS mom_cycle_step1 0.0 mom_cycle_step2 0.0 mom_cycle_step3 0.0]
+    set dwell 0
+    set n [llength $args]
+    for {set i 0} {$i < $n} {incr i} {
+        set word [lindex $args $i]
+        set next [lindex $args $i+1]
+        set num [string is double -strict $next]
+        switch -- $word {
+            RAPTO - CLEAR - FEDTO - DEPTH - RTRCTO - STEP - DWELL - MMPM - IPM - MMPR - IPR {}
+            default {::fivax::Fail MOM CYCLE "$where: unexpected [expr {[string is double -strict $word]
+                ? "number $word" : "word '$word'"}]"}
+        }
+        if {$word eq "RTRCTO" && $next in {AUTO MANUAL}} {
+            dict set p mom_cycle_retract_mode $next
+            incr i
+            continue
+        }
+        if {$word eq "DWELL" && $next eq "REV" && [string is double -strict [lindex $args $i+2]]} {
+            dict set p mom_cycle_delay [lindex $args $i+2]
+            dict set p mom_cycle_delay_mode REVS
+            set dwell 1
+            incr i 2
+            continue
+        }
+        if {!$num} {::fivax::Fail MOM CYCLE "$where: $word needs a number"}
+        incr i
+        switch -- $word {
+            RAPTO - CLEAR {dict set p mom_cycle_rapid_to [expr {$next * $scale}]}
+            FEDTO {dict set p mom_cycle_feed_to [expr {$next * $scale}]}
+            DEPTH {dict set p mom_cycle_feed_to [expr {-$next * $scale}]}
+            RTRCTO {
+                dict set p mom_cycle_retract_to [expr {$next * $scale}]
+                dict set p mom_cycle_retract_mode AUTO
+            }
+            DWELL {
+                dict set p mom_cycle_delay $next
+                set dwell 1
+            }
+            STEP {
+                set j 1
+                dict set p mom_cycle_step1 [expr {$next * $scale}]
+                while {$j < 3 && [string is double -strict [lindex $args $i+1]]} {
+                    incr j
+                    incr i
+                    dict set p mom_cycle_step$j [expr {[lindex $args $i] * $scale}]
+                }
+            }
+            default {
+                dict set p mom_cycle_feed_rate [expr {$next * $scale}]
+                dict set p mom_cycle_feed_rate_mode $word
+            }
+        }
+    }
+    foreach {var what} {mom_cycle_feed_to "a depth (FEDTO or DEPTH)"
+        mom_cycle_rapid_to "an R plane (RAPTO or CLEAR)"} {
+        if {![dict exists $p $var]} {::fivax::Fail MOM CYCLE "$where: $key needs $what"}
+    }
+    if {![dict exists $p mom_cycle_retract_to]} {
+        dict set p mom_cycle_retract_to [dict get $p mom_cycle_rapid_to]
+    }
+    if {[dict get $p mom_cycle_feed_to] >= [dict get $p mom_cycle_rapid_to]} {
+        ::fivax::Fail MOM CYCLE "$where: the hole bottom ([dict get $p mom_cycle_feed_to]) is\
+            not below the R plane ([dict get $p mom_cycle_rapid_to]) along the tool axis"
+    }
+    if {$dwell && $key in {DRILL BORE}} {append key ,DWELL}
+    if {![dict exists $cycleEvents $key]} {
+        ::fivax::Fail MOM CYCLE "$where: unsupported cycle $key"
+    }
+    list [dict get $cycleEvents $key] $p
+}
+
 # ::fivax::mom::Where -- Returns FILE:LINE of record rec.
 proc ::fivax::mom::Where {rec} {
     return "[dict get $rec file]:[dict get $rec line]"
@@ -78,7 +222,8 @@ oo::class create ::fivax::mom::Runtime {
             event "" records 0 blocks 0 warnings 0 events 0 pathOpen 0
             headerPending 0 rapid 0 circle {} cycle {} axis {0.0 0.0 1.0}
             point {} tool {} toolKey {} prevToolKey {} toolChanged 0 firstMove 1
-            toolNames {} handlers {} msysPending 0 unknown {}
+            toolNames {} handlers {} msysPending 0 unknown {} udes {}
+            scale 1.0 clUnit MM outUnit MM unitsSeen 0 firstUnit MM nurbs {}
         }
         set S(nc) [::fivax::nc::create -sequence 0]
         if {$S(def) ne ""} {
@@ -100,12 +245,17 @@ oo::class create ::fivax::mom::Runtime {
         foreach cmd $::fivax::mom::stubs {
             $child alias $cmd ::fivax::mom::Stub
         }
+        $child eval [list set ::mom_definition_file_name $S(def)]
+        $child eval [list set ::mom_event_handler_file_name $S(post)]
         dict for {name value} $S(globals) {
             $child eval [list set ::$name $value]
         }
         if {$S(post) ne ""} {
             $child eval [list source $S(post)]
         }
+        # NX converts the CL data to the post's output unit.
+        set unit [string toupper [my PostVar mom_kin_output_unit MM]]
+        set S(outUnit) [expr {$unit in {IN INCH INCHES} ? "IN" : "MM"}]
     }
 
     destructor {
@@ -131,6 +281,7 @@ oo::class create ::fivax::mom::Runtime {
         if {$path eq "-"} {
             set reader [::fivax::clsf::channel stdin <stdin>]
         } else {
+            set S(firstUnit) [::fivax::mom::FirstUnit $path]
             set reader [::fivax::clsf::open $path]
         }
         try {
@@ -155,13 +306,15 @@ oo::class create ::fivax::mom::Runtime {
             set name [file rootname [file tail $path]]
         }
         my Globals [list mom_part_name $name mom_date [clock format [clock seconds]] \
-            mom_logname fivax mom_ug_version fivax-replay mom_output_unit MM \
-            mom_part_unit MM mom_machine_mode MILL mom_cl_file $path]
+            mom_logname fivax mom_ug_version fivax-replay mom_machine_mode MILL \
+            mom_cl_file $path]
+        my SetUnit $S(firstUnit)
         my Fire start_of_program
     }
 
     # Finish -- Closes an open path and fires MOM_end_of_program.
     method Finish {} {
+        if {[llength $S(nurbs)]} {my Nurbs}
         my FlushHeader
         if {$S(pathOpen)} {my EndPath}
         my Fire end_of_program
@@ -215,6 +368,8 @@ oo::class create ::fivax::mom::Runtime {
         set kind [dict get $rec kind]
         my Globals [list mom_cl_line [dict get $rec line]]
         if {$S(headerPending) && $kind ni $headerKinds} {my FlushHeader}
+        if {$S(scale) != 1.0} {set rec [my Scale $rec]}
+        if {[llength $S(nurbs)] && $kind ni {KNOT CNTRL}} {my Nurbs}
         switch -- $kind {
             GOTO      {my Motion $rec}
             RAPID     {set S(rapid) 1}
@@ -228,7 +383,7 @@ oo::class create ::fivax::mom::Runtime {
             SELECT    {
                 my Globals [list mom_tool_preselect_number [dict get $rec tool] \
                     mom_next_tool_number [dict get $rec tool]]
-                if {!$S(headerPending)} {my EnsurePath; my Fire tool_preselect}
+                my Event tool_preselect
             }
             SPINDL    {my Spindle $rec}
             COOLNT    {my Coolant $rec}
@@ -244,9 +399,24 @@ oo::class create ::fivax::mom::Runtime {
             OPSTOP    {my EnsurePath; my Fire opstop}
             DELAY     {my Delay $rec}
             CYCLE     {my Cycle $rec}
+            NURBS     {set S(nurbs) [dict create rec $rec knots {} cntrl {}]}
+            KNOT - CNTRL {my NurbsData $rec}
             UNITS     {my Units $rec}
             MULTAX - FINI - END {}
             default   {my Unknown $rec}
+        }
+    }
+
+    # Event --
+    #	Fires a control event of the operation: gathered while the header is
+    #	read (it fires after the tool change, as NX fires the operation's
+    #	user-defined events), at once otherwise.
+    method Event {event} {
+        if {$S(headerPending)} {
+            lappend S(udes) $event
+        } else {
+            my EnsurePath
+            my Fire $event
         }
     }
 
@@ -324,8 +494,9 @@ oo::class create ::fivax::mom::Runtime {
     }
 
     # FlushHeader --
-    #	Fires MOM_start_of_path with the gathered header, then the tool event
-    #	when the tool differs from the previous operation's.
+    #	Fires MOM_start_of_path with the gathered header (tool, spindle and
+    #	coolant globals set), MOM_msys, the tool event when the tool differs
+    #	from the previous operation's, then the gathered control events.
     method FlushHeader {} {
         if {!$S(headerPending)} return
         set S(headerPending) 0
@@ -333,10 +504,11 @@ oo::class create ::fivax::mom::Runtime {
         set S(firstMove) 1
         set S(toolChanged) 0
         set child $S(interp)
-        if {![info exists S(toolNumbered)]} {
+        # no TOOL PATH nor LOAD yet (an implicit operation): no tool to change to
+        set toolKnown [expr {$S(toolKey) ne ""}]
+        if {$toolKnown && ![info exists S(toolNumbered)]} {
             # No LOAD/TOOL: number tools by first appearance of their names.
             set key $S(toolKey)
-            if {$key eq ""} {set key {name DEFAULT}}
             set idx [lsearch -exact $S(toolNames) $key]
             if {$idx < 0} {lappend S(toolNames) $key; set idx [expr {[llength $S(toolNames)] - 1}]}
             set n [expr {$idx + 1}]
@@ -344,7 +516,7 @@ oo::class create ::fivax::mom::Runtime {
                 mom_tool_length_adjust_register $n]
         }
         foreach {var default} {mom_tool_length 0.0 mom_tool_diameter 0.0
-            mom_tool_corner1_radius 0.0 mom_tool_name "" mom_tool_number 1} {
+            mom_tool_corner1_radius 0.0 mom_tool_name ""} {
             if {![$child eval [list info exists ::$var]]} {
                 my Globals [list $var $default]
             }
@@ -354,12 +526,16 @@ oo::class create ::fivax::mom::Runtime {
             set S(msysPending) 0
             my Fire msys
         }
-        my ToolChange
+        if {$toolKnown} {my ToolChange}
+        set udes $S(udes)
+        set S(udes) {}
+        foreach event $udes {my Fire $event}
     }
 
     # ToolChange --
     #	Fires MOM_first_tool for the program's first tool, MOM_tool_change when
-    #	the tool differs from the last one, nothing otherwise.
+    #	the tool differs from the last one, nothing otherwise (tools come
+    #	from the CL only: TOOL PATH, LOAD, LOADTL).
     method ToolChange {} {
         set key [list [$S(interp) eval {set ::mom_tool_number}] $S(toolKey)]
         if {$key eq $S(prevToolKey)} return
@@ -380,11 +556,27 @@ oo::class create ::fivax::mom::Runtime {
         unset -nocomplain S(toolNumbered)
     }
 
-    # Feed -- FEDRAT: sets the programmed feed and its mode.
+    # Feed --
+    #	FEDRAT: sets the programmed feed and its mode. IPM or IPR before any
+    #	motion and UNITS record makes the CL's unit inch (NX's CLSF has no
+    #	UNITS record: the feed's unit tells); after motion taken as mm it is
+    #	an error.
+    #	Errors: {FIVAX MOM UNITS}.
     method Feed {rec} {
         set value [dict get $rec value]
-        set mode [string map {PERMIN MMPM PERREV MMPR} [dict get $rec unit]]
-        if {$mode eq ""} {set mode MMPM}
+        set word [dict get $rec unit]
+        if {$word in {IPM IPR} && $S(clUnit) ne "IN"} {
+            if {$S(point) ne "" || $S(unitsSeen)} {
+                ::fivax::Fail MOM UNITS "[::fivax::mom::Where $rec]: FEDRAT: $word, but the CL's\
+                    lengths are in mm (UNITS/INCHES missing before the motion?)"
+            }
+            set old $S(scale)
+            my SetUnit IN
+            set value [expr {$value / $old * $S(scale)}]
+        }
+        # the value is in the output unit now
+        set perRev [expr {$word in {MMPR IPR PERREV}}]
+        set mode [lindex [expr {$S(outUnit) eq "IN" ? {IPM IPR} : {MMPM MMPR}}] $perRev]
         my Globals [list mom_feed_rate_mode $mode mom_programmed_feed_rate $value \
             mom_feed_cut_value $value]
         if {$mode in {MMPR IPR}} {
@@ -397,44 +589,59 @@ oo::class create ::fivax::mom::Runtime {
     }
 
     # Motion --
-    #	GOTO: fires the motion it completes (rapid, linear, circular, or a
-    #	cycle hole), through MOM_initial_move / MOM_first_move for the first
-    #	motion of a path, each preceded by MOM_before_motion.
+    #	GOTO: fires the motion it completes (rapid, linear, arc pieces, or a
+    #	cycle hole), each preceded by MOM_before_motion; the first motion of
+    #	a path goes out through MOM_initial_move / MOM_first_move.
     method Motion {rec} {
         my EnsurePath
         if {[llength [dict get $rec axis]]} {set S(axis) [dict get $rec axis]}
-        my SetPosition [dict get $rec point] $S(axis)
+        set point [dict get $rec point]
         if {[llength $S(cycle)]} {
-            my Globals [list mom_motion_event [dict get $S(cycle) event]_move \
-                mom_motion_type CYCLE]
-            my Fire [dict get $S(cycle) event]_move
+            my Hole $rec $point
             return
         }
         if {$S(rapid)} {
-            set event rapid_move
+            set S(rapid) 0
             my Globals [list mom_motion_type RAPID mom_programmed_feed_rate 0]
+            my SetPosition $point $S(axis)
+            my Move rapid_move
         } elseif {[llength $S(circle)]} {
-            set event circular_move
-            my Circle $S(circle)
-            my Globals [list mom_motion_type CUT]
+            set circle $S(circle)
+            set S(circle) {}
+            my Arc $rec $circle $point
         } else {
-            set event linear_move
-            if {![info exists S(feed)]} {
-                ::fivax::Fail MOM FEED "[::fivax::mom::Where $rec]: GOTO: feed move before any FEDRAT"
-            }
-            my Globals [list mom_motion_type CUT mom_programmed_feed_rate $S(feed) \
-                mom_feed_rate $S(feed)]
+            my FeedGlobals $rec
+            my SetPosition $point $S(axis)
+            my Move linear_move
         }
-        set S(rapid) 0
-        set S(circle) {}
+    }
+
+    # FeedGlobals --
+    #	Sets the globals of a cutting move at the programmed feed.
+    #	Errors: {FIVAX MOM FEED} before any FEDRAT.
+    method FeedGlobals {rec} {
+        if {![info exists S(feed)]} {
+            ::fivax::Fail MOM FEED "[::fivax::mom::Where $rec]: GOTO: feed move before any FEDRAT"
+        }
+        my Globals [list mom_motion_type CUT mom_programmed_feed_rate $S(feed) \
+            mom_feed_rate $S(feed)]
+    }
+
+    # Move --
+    #	Fires MOM_before_motion and the motion event (its name also in
+    #	mom_motion_event); the first motion of a path fires MOM_initial_move
+    #	after a tool change, else MOM_first_move, with mom_motion_event set
+    #	to that name (as NX does, inferred from Post Builder's posts, which
+    #	choose rapid or feed there from mom_programmed_feed_rate).
+    method Move {event} {
         my Globals [list mom_motion_event $event]
         my Fire before_motion
         if {$S(firstMove)} {
             set S(firstMove) 0
-            my Fire [expr {$S(toolChanged) ? "initial_move" : "first_move"}]
-        } else {
-            my Fire $event
+            set event [expr {$S(toolChanged) ? "initial_move" : "first_move"}]
+            my Globals [list mom_motion_event $event]
         }
+        my Fire $event
     }
 
     # SetPosition --
@@ -455,23 +662,148 @@ oo::class create ::fivax::mom::Runtime {
         my Array mom_pos $point
     }
 
-    # Circle --
-    #	Sets mom_arc_* from a CIRCLE record. mom_arc_direction is the turning
-    #	sense about mom_arc_axis: NX-style CIRCLEs (11 numbers: NX, Makino)
-    #	turn clockwise about their vector, the short APT form (6 or 7 numbers:
-    #	Creo, SolidWorks CAM) counter-clockwise (nx-conventions.md 5.4).
-    method Circle {rec} {
-        my Array mom_arc_center [dict get $rec center]
-        my Array mom_arc_axis [dict get $rec axis]
-        set sense [expr {[llength [dict get $rec numbers]] >= 11 ? "CLW" : "CCLW"}]
-        set pairs [list mom_arc_radius [dict get $rec radius] mom_arc_times \
-            [dict get $rec times] mom_arc_direction $sense]
+    # Arc --
+    #	CIRCLE + GOTO: fires the arc in pieces as NX does by the post's
+    #	output modes (a helix: mom_kin_helical_arc_output_mode, else
+    #	mom_kin_arc_output_mode): FULL_CIRCLE at most 360 degrees a piece,
+    #	QUADRANT at most 90, END_POINT the whole arc, LINEAR as linear
+    #	moves within the arc's tolerance (0.002 mm when the CIRCLE has
+    #	none). A helix piece goes to MOM_helix_move when the post has one.
+    #	mom_arc_direction is the turning sense about mom_arc_axis: NX-style
+    #	CIRCLEs (11 numbers: NX, Makino) turn clockwise about their vector,
+    #	the short APT form (6 or 7 numbers: Creo, SolidWorks CAM)
+    #	counter-clockwise (nx-conventions.md 5.4).
+    method Arc {rec circle end} {
+        namespace upvar ::fivax::num pi pi
+        set start [expr {$S(point) ne "" ? $S(point) : $end}]
+        set center [dict get $circle center]
+        set axis [dict get $circle axis]
+        set sense [expr {[llength [dict get $circle numbers]] >= 11 ? -1 : 1}]
+        set times [dict get $circle times]
+        set helix [expr {$times > 0 || abs([::fivax::vec::dot [::fivax::vec::sub $end $start] \
+            [::fivax::vec::unit $axis]]) > 1e-6}]
+        set mode [my PostVar [expr {$helix ? "mom_kin_helical_arc_output_mode"
+            : "mom_kin_arc_output_mode"}] FULL_CIRCLE]
+        my FeedGlobals $rec
+        if {$mode eq "LINEAR"} {
+            set tol [expr {[dict exists $circle tolerance] && [dict get $circle tolerance] > 0
+                ? [dict get $circle tolerance] : 0.002}]
+            foreach p [::fivax::curve::arc $start $end $center $axis $sense $times $tol] {
+                my SetPosition $p $S(axis)
+                my Move linear_move
+            }
+            return
+        }
+        set max [dict get {FULL_CIRCLE 360.0 QUADRANT 90.0 END_POINT Inf} $mode]
+        set pieces [::fivax::curve::arcSplit $start $end $center $axis $sense $times \
+            [expr {$max * $pi / 180.0}]]
+        set pairs [list mom_arc_radius [dict get $circle radius] \
+            mom_arc_direction [expr {$sense < 0 ? "CLW" : "CCLW"}]]
         foreach key {tolerance intol tool_diameter tool_radius} {
-            if {[dict exists $rec $key]} {
-                lappend pairs mom_arc_[string map {intol intol_fraction} $key] [dict get $rec $key]
+            if {[dict exists $circle $key]} {
+                lappend pairs mom_arc_[string map {intol intol_fraction} $key] [dict get $circle $key]
             }
         }
-        my Globals $pairs
+        my Array mom_arc_center $center
+        my Array mom_arc_axis $axis
+        set event [expr {$helix && [my Has MOM_helix_move] ? "helix_move" : "circular_move"}]
+        foreach piece $pieces {
+            lassign $piece p sweep
+            # a piece turns at most once: no extra turns
+            my Globals [concat $pairs [list mom_arc_times 0 \
+                mom_arc_angle [::fivax::num::deg $sweep] \
+                mom_helix_pitch [my Pitch $S(point) $p $axis $sweep]]]
+            my SetPosition $p $S(axis)
+            my Move $event
+        }
+    }
+
+    # NurbsData --
+    #	KNOT or CNTRL: adds the record's knots or control point to the open
+    #	NURBS. Errors: {FIVAX MOM NURBS} outside a NURBS.
+    method NurbsData {rec} {
+        set kind [dict get $rec kind]
+        if {![llength $S(nurbs)]} {
+            ::fivax::Fail MOM NURBS "[::fivax::mom::Where $rec]: $kind outside a NURBS"
+        }
+        if {$kind eq "KNOT"} {
+            dict lappend S(nurbs) knots {*}[dict get $rec knots]
+        } else {
+            dict lappend S(nurbs) cntrl [dict get $rec point]
+        }
+    }
+
+    # Nurbs --
+    #	Fires the open NURBS as MOM_nurbs_move with mom_nurbs_order,
+    #	mom_nurbs_knot_count and mom_nurbs_knots(i) (the full, clamped knot
+    #	vector), mom_nurbs_point_count and mom_nurbs_points(i,0..2) (the
+    #	control points, the current position first), mom_nurbs_weights(i)
+    #	(all 1) and mom_mcs_goto at the curve's end (see the CLSF
+    #	convention in lib/curve.tcl; NX's own layout of these globals is
+    #	inferred from Post Builder posts that read them). A post without
+    #	MOM_nurbs_move gets the curve as linear moves within 0.002 mm, as
+    #	NX linearises for a post that does not take NURBS.
+    #	Errors: {FIVAX MOM NURBS} "FILE:LINE: NURBS: what".
+    method Nurbs {} {
+        set data $S(nurbs)
+        set S(nurbs) {}
+        set rec [dict get $data rec]
+        my EnsurePath
+        if {$S(point) eq ""} {
+            ::fivax::Fail MOM NURBS "[::fivax::mom::Where $rec]: NURBS: no position before the curve"
+        }
+        try {
+            set curve [::fivax::curve::clsfNurbs $S(point) [dict get $data knots] [dict get $data cntrl]]
+        } trap {FIVAX CURVE} {msg} {
+            ::fivax::Fail MOM NURBS "[::fivax::mom::Where $rec]: NURBS: $msg"
+        }
+        my FeedGlobals $rec
+        if {![my Has MOM_nurbs_move]} {
+            foreach p [::fivax::curve::nurbsPoints $curve 0.002] {
+                my SetPosition $p $S(axis)
+                my Move linear_move
+            }
+            return
+        }
+        set knots [dict get $curve knots]
+        set points [dict get $curve points]
+        my Globals [list mom_nurbs_order [expr {[dict get $curve degree] + 1}] \
+            mom_nurbs_knot_count [llength $knots] mom_nurbs_point_count [llength $points]]
+        my Array mom_nurbs_knots $knots
+        my Array mom_nurbs_weights [dict get $curve weights]
+        set pairs {}
+        set i 0
+        foreach p $points {
+            foreach j {0 1 2} c $p {lappend pairs $i,$j $c}
+            incr i
+        }
+        $S(interp) eval [list array set ::mom_nurbs_points $pairs]
+        my SetPosition [lindex $points end] $S(axis)
+        my Move nurbs_move
+    }
+
+    # Pitch -- Returns the axial rise per turn of the arc piece from a to b sweeping sweep (rad).
+    method Pitch {a b axis sweep} {
+        namespace upvar ::fivax::num pi pi
+        if {$sweep <= 0} {return 0.0}
+        set rise [::fivax::vec::dot [::fivax::vec::sub $b $a] [::fivax::vec::unit $axis]]
+        expr {$rise * 2.0 * $pi / $sweep}
+    }
+
+    # Has -- Returns 1 when the post defines the command name.
+    method Has {name} {
+        if {![dict exists $S(handlers) $name]} {
+            dict set S(handlers) $name [llength [$S(interp) eval [list info commands ::$name]]]
+        }
+        dict get $S(handlers) $name
+    }
+
+    # PostVar -- Returns the post's global name, or default when it is not set.
+    method PostVar {name default} {
+        if {[$S(interp) eval [list info exists ::$name]]} {
+            return [$S(interp) eval [list set ::$name]]
+        }
+        return $default
     }
 
     # FromHome -- FROM and GOHOME: set the position and fire the event.
@@ -494,12 +826,13 @@ oo::class create ::fivax::mom::Runtime {
         set S(rapid) 0
     }
 
-    # Spindle -- SPINDL: fires MOM_spindle_rpm or MOM_spindle_off.
+    # Spindle --
+    #	SPINDL: sets mom_spindle_* and fires MOM_spindle_rpm (see Event), or
+    #	MOM_spindle_off.
     method Spindle {rec} {
-        my EnsurePath
         if {[dict get $rec state] eq "OFF"} {
             my Globals [list mom_spindle_status OFF]
-            my Fire spindle_off
+            my Event spindle_off
             return
         }
         set pairs [list mom_spindle_status ON mom_spindle_mode [dict get $rec mode]]
@@ -510,15 +843,14 @@ oo::class create ::fivax::mom::Runtime {
             lappend pairs mom_spindle_direction [dict get $rec direction]
         }
         my Globals $pairs
-        my Fire spindle_rpm
+        my Event spindle_rpm
     }
 
-    # Coolant -- COOLNT: fires MOM_coolant_on or MOM_coolant_off.
+    # Coolant -- COOLNT: sets mom_coolant_* and fires MOM_coolant_on or _off (see Event).
     method Coolant {rec} {
-        my EnsurePath
         set mode [dict get $rec mode]
         my Globals [list mom_coolant_mode $mode mom_coolant_status [expr {$mode eq "OFF" ? "OFF" : "ON"}]]
-        my Fire [expr {$mode eq "OFF" ? "coolant_off" : "coolant_on"}]
+        my Event [expr {$mode eq "OFF" ? "coolant_off" : "coolant_on"}]
     }
 
     # Cutcom -- CUTCOM: fires MOM_cutcom_on or MOM_cutcom_off.
@@ -530,10 +862,10 @@ oo::class create ::fivax::mom::Runtime {
         my Fire [expr {$mode eq "OFF" ? "cutcom_off" : "cutcom_on"}]
     }
 
-    # Delay -- DELAY: fires MOM_delay with mom_delay_value or mom_delay_revs.
+    # Delay -- DELAY: fires MOM_delay with mom_delay_value (seconds) or mom_delay_revs.
     method Delay {rec} {
         my EnsurePath
-        if {[dict exists $rec revs]} {
+        if {[dict get $rec revs] ne ""} {
             my Globals [list mom_delay_revs [dict get $rec revs] mom_delay_mode REVOLUTIONS]
         } else {
             my Globals [list mom_delay_value [dict get $rec value] mom_delay_mode SECONDS]
@@ -541,60 +873,95 @@ oo::class create ::fivax::mom::Runtime {
         my Fire delay
     }
 
-    # Units -- UNITS: sets mom_part_unit and mom_output_unit (MM or IN).
+    # Units --
+    #	UNITS: the CL's length unit; lengths from here on are converted to
+    #	the post's output unit (mom_kin_output_unit).
     method Units {rec} {
-        set unit [expr {[dict get $rec value] eq "INCH" ? "IN" : "MM"}]
-        my Globals [list mom_part_unit $unit mom_output_unit $unit]
+        set S(unitsSeen) 1
+        my SetUnit [expr {[dict get $rec value] eq "INCH" ? "IN" : "MM"}]
+    }
+
+    # SetUnit -- Sets the CL's unit (MM or IN): mom_part_unit and the scale to the output unit.
+    method SetUnit {unit} {
+        namespace upvar ::fivax::mom unitLength unitLength
+        set S(clUnit) $unit
+        set S(scale) [expr {[dict get $unitLength $unit] / [dict get $unitLength $S(outUnit)]}]
+        my Globals [list mom_part_unit $unit mom_output_unit $S(outUnit)]
+    }
+
+    # Scale --
+    #	Returns record rec with its lengths (points, centres, radii, tool
+    #	sizes, feeds, cycle distances) converted by the unit scale.
+    method Scale {rec} {
+        set k $S(scale)
+        foreach key {point center origin} {
+            if {[dict exists $rec $key]} {
+                dict set rec $key [::fivax::vec::scale $k [dict get $rec $key]]
+            }
+        }
+        foreach key {radius tolerance tool_diameter tool_radius diameter corner1_radius
+            length flute_length value} {
+            if {[dict exists $rec $key] && [dict get $rec $key] ne ""
+                    && !([dict get $rec kind] in {DELAY UNITS})} {
+                dict set rec $key [expr {[dict get $rec $key] * $k}]
+            }
+        }
+        return $rec
     }
 
     # Cycle --
-    #	CYCLE/<type>: sets mom_cycle_* from the RAPTO/FEDTO/RTRCTO/feed words
-    #	and fires the activation event (MOM_drill, MOM_drill_deep, ...);
-    #	following GOTOs become MOM_<cycle>_move; CYCLE/OFF fires MOM_cycle_off.
+    #	CYCLE/<type>: sets the mom_cycle_* of the cycle (see CycleParams)
+    #	and fires its activation event (MOM_drill, MOM_drill_deep, ...);
+    #	each following GOTO is a hole (see Hole); CYCLE/OFF fires
+    #	MOM_cycle_off.
+    #	Errors: {FIVAX MOM CYCLE} for a cycle the runtime cannot read.
     method Cycle {rec} {
         my EnsurePath
-        set type [string tolower [dict get $rec type]]
-        if {$type eq "off"} {
+        if {[string toupper [dict get $rec type]] eq "OFF"} {
             set S(cycle) {}
             my Fire cycle_off
             return
         }
-        set args [dict get $rec args]
-        set event $type
-        set first [string tolower [lindex $args 0]]
-        if {$type eq "drill" && $first in {deep brkchp break_chip dwell text csink}} {
-            set event drill_[string map {brkchp break_chip} $first]
-        } elseif {$type eq "deep"} {
-            set event drill_deep
+        lassign [::fivax::mom::CycleParams $rec $S(scale)] event params
+        my Globals [concat [list mom_cycle_event $event] $params]
+        set S(cycle) [dict create event $event params $params src [::fivax::mom::Where $rec]]
+        my Fire $event
+    }
+
+    # Hole --
+    #	A GOTO in a cycle: the hole top at point on the current tool axis.
+    #	Sets mom_cycle_rapid_to_pos, _feed_to_pos and _retract_to_pos and
+    #	fires MOM_<cycle>_move; the first motion of a path first fires
+    #	MOM_initial_move / MOM_first_move at mom_cycle_rapid_to_pos (the
+    #	event dictionary says so of NX).
+    method Hole {rec point} {
+        set params [dict get $S(cycle) params]
+        set t [::fivax::vec::unit $S(axis)]
+        foreach {key var} {rapid mom_cycle_rapid_to feed mom_cycle_feed_to retract mom_cycle_retract_to} {
+            set pos($key) [::fivax::vec::add $point [::fivax::vec::scale [dict get $params $var] $t]]
+            my Array ${var}_pos $pos($key)
         }
-        if {![regexp {^[a-z][a-z0-9_]*$} $event]} {set event cycle}
-        set pairs {}
-        foreach {word var} {RAPTO mom_cycle_rapid_to FEDTO mom_cycle_feed_to
-            RTRCTO mom_cycle_retract_to DEPTH mom_cycle_feed_to STEP mom_cycle_step1
-            CLEAR mom_cycle_rapid_to MMPM mom_cycle_feed_rate IPM mom_cycle_feed_rate
-            DWELL mom_cycle_delay} {
-            set idx [lsearch -exact $args $word]
-            if {$idx >= 0 && [string is double -strict [lindex $args $idx+1]]} {
-                lappend pairs $var [lindex $args $idx+1]
-            }
+        my Globals [list mom_motion_type CYCLE mom_programmed_feed_rate 0]
+        if {$S(firstMove)} {
+            my SetPosition $pos(rapid) $S(axis)
+            my Move initial_move
         }
-        my Globals [concat [list mom_cycle_type $type mom_cycle_event $event] $pairs]
-        set S(cycle) [dict create event $event]
+        my SetPosition $point $S(axis)
+        set event [dict get $S(cycle) event]_move
+        my Globals [list mom_motion_event $event]
+        my Fire before_motion
         if {![my Fire $event]} {
-            incr S(warnings)
-            my Listing "warning: [::fivax::mom::Where $rec]: the post has no MOM_$event: the holes of this cycle are not output"
+            ::fivax::Fail MOM CYCLE "[::fivax::mom::Where $rec]: the post has no MOM_$event:\
+                the holes of this cycle cannot be output"
         }
     }
 
     # Unknown --
-    #	An unknown record: a warning with FILE:LINE (the first five of each
-    #	word; Finish counts the rest), and MOM_<word> fired if the post
-    #	defines it (the word is used only if it is a plain name).
+    #	A record the runtime does not pass to the post: a warning with
+    #	FILE:LINE (the first five of each word; Finish counts the rest).
+    #	CL words never name a handler: only the records above reach the post.
     method Unknown {rec} {
         set major [dict get $rec major]
-        set word [string tolower [string map {- _ " " _} $major]]
-        my Globals [list mom_record_major $major mom_record_args [dict get $rec args]]
-        if {[regexp {^[a-z][a-z0-9_]*$} $word] && [my Fire $word]} return
         incr S(warnings)
         dict incr S(unknown) $major
         if {[dict get $S(unknown) $major] <= 5} {

@@ -6,12 +6,14 @@
 #	output layer (lib/output.tcl) and the .def define the others. Pure:
 #	every method returns text; nothing here writes a file.
 #
-#	A Writer keeps per address one list {mode kind spec leader trailer}:
+#	A Writer keeps per address one list {mode kind spec leader trailer limits}:
 #	    mode  m = modal (written when its text changes), w = always written,
 #	          s = suppressed, W = forced once, S = suppressed once;
 #	    kind  f = printf real, F = printf real with a + flag, d = printf
 #	          integer (value rounded), s = string, a = NX &abcdef code;
-#	    spec  the printf string, or the parsed &abcdef fields.
+#	    spec  the printf string, or the parsed &abcdef fields;
+#	    limits {} or {min minAction max maxAction} (NX's MIN/MAX with
+#	          abort, warning or truncate; "" for no bound).
 #	The mode is derived from the flags {base forceAlways suppressAlways
 #	once} by Mode, so the hot path reads one element.
 #
@@ -30,9 +32,10 @@ namespace eval ::fivax::nc {
         {-sequence bool 1 "" "write N sequence numbers"}
         {-seq-start {int min 0} 10 N "first sequence number"}
         {-seq-incr {int min 1} 10 N "sequence number step"}
-        {-seq-max {int min 1} 99999 N "largest sequence number"}
+        {-seq-max {int min 1} 99999 N "largest sequence number: numbering stops after it, with a warning"}
         {-separator text " " TEXT "text between words"}
         {-eol any "" TEXT "text at the end of every block"}
+        {-warn any "" CMD "command prefix called with the message of a MIN/MAX Warning, or when numbering stops"}
     }
 }
 
@@ -57,7 +60,7 @@ oo::class create ::fivax::nc::Writer {
         array set Addr {}
         my Apply $cfg
         # The nameless address: literal text (template "strings"), always written.
-        set Addr() {w s {} {} {}}
+        set Addr() {w s {} {} {} {}}
         set Flags() {always 0 0 {}}
         set Last() ""
         set Val() ""
@@ -85,13 +88,16 @@ oo::class create ::fivax::nc::Writer {
     # Adds or changes address name. Options: -leader L (default for a new
     # address: its name), -format F (printf %d/%.3f/%s... or an NX &abcdef
     # code; default %s), -force off|always|once (once: force it once now),
-    # -trailer T. Modal memory of an existing address is kept.
+    # -trailer T, -min and -max {value action} (NX's MIN/MAX: a value
+    # beyond is aborted with {FIVAX NC RANGE}, written with a warning, or
+    # truncated to the bound; action "" is truncate; {} removes the bound).
+    # Modal memory of an existing address is kept.
     method address {name args} {
         if {[llength $args] % 2} {
             ::fivax::Fail NC OPTION "wrong # args: should be \"address name ?-option value ...?\""
         }
         if {[info exists Addr($name)]} {
-            lassign $Addr($name) mode kind spec leader trailer
+            lassign $Addr($name) mode kind spec leader trailer limits
             lassign $Flags($name) base fa sa once
             set fmt [lindex $spec end]
         } else {
@@ -100,6 +106,7 @@ oo::class create ::fivax::nc::Writer {
             }
             set leader $name
             set trailer ""
+            set limits {}
             set fmt %s
             lassign {off 0 0 {}} base fa sa once
             set Last($name) ""
@@ -111,6 +118,7 @@ oo::class create ::fivax::nc::Writer {
                 -leader {set leader $v}
                 -trailer {set trailer $v}
                 -format {set fmt $v}
+                -min - -max {set limits [::fivax::nc::Limit $limits $opt $v]}
                 -force {
                     switch -- $v {
                         off - always {set base $v}
@@ -119,19 +127,40 @@ oo::class create ::fivax::nc::Writer {
                     }
                 }
                 default {
-                    ::fivax::Fail NC OPTION "bad option \"$opt\": must be -leader, -format, -force, or -trailer"
+                    ::fivax::Fail NC OPTION "bad option \"$opt\": must be -leader, -format, -force, -trailer, -min, or -max"
                 }
             }
         }
         lassign [::fivax::nc::ParseFormat $fmt] kind spec
         set Flags($name) [list $base $fa $sa $once]
-        set Addr($name) [list [::fivax::nc::Mode $base $fa $sa $once] $kind $spec $leader $trailer]
+        set Addr($name) [list [::fivax::nc::Mode $base $fa $sa $once] $kind $spec $leader \
+            $trailer $limits]
         return $name
     }
 
     # Returns 1 when address name is defined.
     method has {name} {
         info exists Addr($name)
+    }
+
+    # Returns the number of decimals address name writes (0 for integer
+    # and string formats).
+    method decimals {name} {
+        if {![info exists Addr($name)]} {
+            ::fivax::Fail NC ADDRESS "unknown address \"$name\""
+        }
+        lassign $Addr($name) mode kind spec
+        switch -- $kind {
+            a {return [lindex $spec 4]}
+            f - F {
+                if {[regexp {%[-+ 0#]*[0-9]*\.([0-9]+)[fFeEgG]} $spec -> d]} {
+                    scan $d %d d
+                    return $d
+                }
+                return 6
+            }
+        }
+        return 0
     }
 
     # Returns the block for words (flat list name value ...), in that
@@ -148,7 +177,7 @@ oo::class create ::fivax::nc::Writer {
             if {![info exists Addr($name)]} {
                 ::fivax::Fail NC ADDRESS "unknown address \"$name\""
             }
-            lassign $Addr($name) mode kind spec leader trailer
+            lassign $Addr($name) mode kind spec leader trailer limits
             if {$mode eq "s"} continue
             if {$mode eq "S"} {lappend once $name; continue}
             # Number in, decimal: Tcl reads "017" as octal, so integers and
@@ -167,6 +196,7 @@ oo::class create ::fivax::nc::Writer {
                     if {$v eq ""} continue
                     set num 0
                 }
+                if {$num && $limits ne ""} {set x [my Bound $name $x $limits]}
                 if {!$num} {
                     set t $v
                 } elseif {!(abs($x) < Inf)} {
@@ -196,14 +226,12 @@ oo::class create ::fivax::nc::Writer {
         }
         if {[llength $once]} {my ConsumeOnce $once}
         if {![llength $out]} {return ""}
-        if {$seqOn} {return [my SeqWord]$sep[join $out $sep]$eol}
-        return [join $out $sep]$eol
+        my Numbered [join $out $sep]
     }
 
     # Returns text as one block, prefixed with N<seq> when numbering is on.
     method line {text} {
-        if {$seqOn} {return [my SeqWord]$sep$text$eol}
-        return $text$eol
+        my Numbered $text
     }
 
     # Forces the named addresses out (once, always) whatever their
@@ -263,6 +291,33 @@ oo::class create ::fivax::nc::Writer {
         return
     }
 
+    # Returns x within address name's limits {min minAction max
+    # maxAction}: truncated to the bound, or as it is after a warning, or
+    # an error {FIVAX NC RANGE} for abort.
+    method Bound {name x limits} {
+        lassign $limits min minAct max maxAct
+        if {$min ne "" && $x < $min} {
+            set bound $min
+            set act $minAct
+        } elseif {$max ne "" && $x > $max} {
+            set bound $max
+            set act $maxAct
+        } else {
+            return $x
+        }
+        switch -- $act {
+            abort {
+                ::fivax::Fail NC RANGE "address $name: $x is beyond its limit $bound"
+            }
+            warning {
+                set warn [dict get $cfg -warn]
+                if {[llength $warn]} {{*}$warn "address $name: $x is beyond its limit $bound"}
+                return $x
+            }
+        }
+        return $bound
+    }
+
     # Copies the separator/eol/sequence options in opts to the state.
     method Apply {opts} {
         dict for {opt v} $opts {
@@ -275,15 +330,29 @@ oo::class create ::fivax::nc::Writer {
         }
     }
 
-    # Returns the N word for the current number and advances it (wraps
-    # past -seq-max to -seq-start).
-    method SeqWord {} {
+    # Returns text as a block: N<seq> first while numbering is on and the
+    # number within -seq-max (then the number advances); past -seq-max
+    # numbering stops with one warning: never a repeated N.
+    method Numbered {text} {
+        if {!$seqOn} {return $text$eol}
         set n $seqNext
-        set next [expr {$n + [dict get $cfg -seq-incr]}]
-        set seqNext [expr {$next > [dict get $cfg -seq-max] ? [dict get $cfg -seq-start] : $next}]
+        if {$n > [dict get $cfg -seq-max]} {
+            set seqOn 0
+            set warn [dict get $cfg -warn]
+            if {[llength $warn]} {
+                {*}$warn "sequence numbers past [dict get $cfg -seq-max] (the largest the\
+                    .def's SEQUENCE allows): the rest of the program is not numbered"
+            }
+            return $text$eol
+        }
+        set seqNext [expr {$n + [dict get $cfg -seq-incr]}]
         lassign $Addr(N) mode kind spec leader trailer
-        if {$kind eq "d"} {return $leader[::format $spec $n]$trailer}
-        return $leader[::fivax::nc::FormatValue $kind $spec $n]$trailer
+        if {$kind eq "d"} {
+            set word $leader[::format $spec $n]$trailer
+        } else {
+            set word $leader[::fivax::nc::FormatValue $kind $spec $n]$trailer
+        }
+        return $word$sep$text$eol
     }
 
     # Clears the once requests of the addresses used by a block.
@@ -327,6 +396,31 @@ oo::class create ::fivax::nc::Writer {
 proc ::fivax::nc::format {F value} {
     lassign [ParseFormat $F] kind spec
     FormatValue $kind $spec $value
+}
+
+# ::fivax::nc::Limit --
+#	Returns the limits list {min minAction max maxAction} with the -min or
+#	-max option set to v: {value action} ("" action: truncate) or {} for
+#	none. Errors {FIVAX NC VALUE} for a bad value or action.
+proc ::fivax::nc::Limit {limits opt v} {
+    if {![llength $limits]} {set limits {{} {} {} {}}}
+    set i [expr {$opt eq "-min" ? 0 : 2}]
+    if {![llength $v]} {
+        lset limits $i {}
+        lset limits $i+1 {}
+    } else {
+        lassign $v value action
+        set x [::fivax::num::parse $value]
+        set action [string tolower $action]
+        if {$action eq ""} {set action truncate}
+        if {$x eq "" || $action ni {abort warning truncate}} {
+            ::fivax::Fail NC VALUE "bad $opt \"$v\": must be {number ?abort|warning|truncate?}"
+        }
+        lset limits $i $x
+        lset limits $i+1 $action
+    }
+    if {[lindex $limits 0] eq "" && [lindex $limits 2] eq ""} {return {}}
+    return $limits
 }
 
 # ::fivax::nc::Mode -- Returns the one-letter mode for the flags (see the file header).

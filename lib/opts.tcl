@@ -19,6 +19,9 @@
 #	               text                   any text on one line
 #	               any                    any text
 #	               {maybe TYPE...}        TYPE, or "" (meaning: not set)
+#	               {many TYPE...}         repeatable: each occurrence adds
+#	                                      a TYPE value to a list (default
+#	                                      and value without any: {})
 #	    default  the value when the option is not given (checked too)
 #	    arg      the value's name in help text (MM, DEG, FILE), "" for bool
 #	    doc      one line for the help text
@@ -41,7 +44,12 @@ proc ::fivax::opts::parse {table argList {who ""}} {
         Fail MISSING $who "option [lindex $argList end] needs a value"
     }
     foreach {name value} $argList {
-        dict set out $name [check $table $name $value $who]
+        set entry [Entry $table $name $who]
+        if {[lindex $entry 1 0] eq "many"} {
+            dict lappend out $name [Check $entry $value $who]
+        } else {
+            dict set out $name [Check $entry $value $who]
+        }
     }
     return $out
 }
@@ -66,7 +74,11 @@ proc ::fivax::opts::argv {table words {who ""}} {
             continue
         }
         if {$i + 1 >= $n} {Fail MISSING $who "option $w needs a value"}
-        dict set out $w [Check $entry [lindex $words $i+1] $who]
+        if {[lindex $entry 1 0] eq "many"} {
+            dict lappend out $w [Check $entry [lindex $words $i+1] $who]
+        } else {
+            dict set out $w [Check $entry [lindex $words $i+1] $who]
+        }
         incr i 2
     }
     list $out [lrange $words $i end]
@@ -87,6 +99,7 @@ proc ::fivax::opts::help {table} {
         lassign $entry name type default arg doc
         set left [string trim "$name $arg"]
         if {$type ne "bool" && $default ne ""} {append doc " (default $default)"}
+        if {[lindex $type 0] eq "many"} {append doc " (repeatable)"}
         lappend lines [format "  %-22s %s" $left $doc]
     }
     join $lines \n
@@ -109,6 +122,10 @@ proc ::fivax::opts::drop {table names} {
 proc ::fivax::opts::Defaults {table} {
     set out [dict create]
     foreach entry $table {
+        if {[lindex $entry 1 0] eq "many"} {
+            dict set out [lindex $entry 0] {}
+            continue
+        }
         dict set out [lindex $entry 0] [Check $entry [lindex $entry 2] "default"]
     }
     return $out
@@ -146,6 +163,7 @@ proc ::fivax::opts::Convert {type value} {
             if {$value eq ""} {return {1 {}}}
             return [Convert $spec $value]
         }
+        many {return [Convert $spec $value]}
         bool {
             if {![string is boolean -strict $value]} {return {0 {}}}
             return [list 1 [expr {$value ? 1 : 0}]]
@@ -207,6 +225,7 @@ proc ::fivax::opts::Describe {type} {
     set spec [lrange $type 1 end]
     switch -- $kind {
         maybe {return "[Describe $spec], or empty"}
+        many {return [Describe $spec]}
         bool {return "a boolean (0 or 1)"}
         real {return "a number[Limits $spec]"}
         int {return "an integer[Limits $spec]"}

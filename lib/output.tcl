@@ -2,12 +2,25 @@
 #	The output layer: turns the planner's neutral move records and the
 #	post's program events (start, tool change, spindle, coolant, comments,
 #	end) into NC blocks of one controller dialect. It alone knows address
-#	names, G and M codes, inverse-time F and where length compensation
-#	goes; the blocks are built by an nc Writer (lib/nc.tcl). Returns text
-#	only: the host writes it.
+#	names, G and M codes, Klartext words, inverse-time F, where length
+#	compensation and TCP go, how a tilted work plane and an arc are
+#	written; the blocks are built by an nc Writer (lib/nc.tcl). Returns
+#	text only: the host writes it.
+#
+#	The post's .def is the one source of formats: every address this layer
+#	writes is defined there (FORMAT, ADDRESS with FORCE, MIN/MAX, LEADER),
+#	and so are the word separator, end of line and sequence numbers. A
+#	LEADER may be a bracketed [$mom_sys_leader(NAME)] (X Y Z N, and
+#	fourth_axis / fifth_axis: the machine's rotary letters); the machine
+#	file's 'output' keys and the options below override decimals and
+#	numbering.
 #
 #	Dialects are data (the Dialects table): what differs between
 #	controllers is looked up there, not written as a copy of the code.
+#	Two syntaxes read the table: ISO G-code (fanuc, sinumerik, linuxcnc)
+#	and Heidenhain Klartext (heidenhain: numbered lines from 0, L/CC/C
+#	blocks, signed words, no G codes). ../shared/spec/dialects.md gives
+#	what each control must receive.
 #	Errors: {FIVAX OPTION ...}, {FIVAX OUTPUT <DETAIL>}.
 
 namespace eval ::fivax::output {
@@ -15,35 +28,108 @@ namespace eval ::fivax::output {
     namespace ensemble create -prefixes 0
 
     variable Options {
-        {-controller {enum fanuc linuxcnc} fanuc NAME "controller dialect"}
-        {-decimals {int min 0 max 9} 3 N "decimals of X Y Z"}
-        {-angle-decimals {int min 0 max 9} 3 N "decimals of the rotary axes"}
-        {-feed-decimals {int min 0 max 9} 1 N "decimals of F in mm/min"}
-        {-inverse-decimals {int min 0 max 9} 3 N "decimals of F in inverse time (G93)"}
-        {-sequence bool 1 "" "write N sequence numbers"}
-        {-seq-start {int min 0} 10 N "first sequence number"}
-        {-seq-incr {int min 1} 10 N "sequence number step"}
+        {-def any {} DICT "the post's .def as read by fivax::def (required)"}
+        {-controller {enum fanuc sinumerik heidenhain linuxcnc} fanuc NAME "controller dialect"}
+        {-tcp bool 0 "" "TCP mode: X Y Z are the tool tip in the workpiece frame, the control keeps the tip on the path"}
+        {-decimals {maybe int min 0 max 9} {} N "decimals of X Y Z (default: the .def's)"}
+        {-angle-decimals {maybe int min 0 max 9} {} N "decimals of the rotary axes (default: the .def's)"}
+        {-feed-decimals {maybe int min 0 max 9} {} N "decimals of F in mm/min (default: the .def's)"}
+        {-inverse-decimals {maybe int min 0 max 9} {} N
+            "decimals of F in inverse time, G93 (default: the .def's)"}
+        {-sequence {maybe bool} {} "0|1" "write N sequence numbers (default: when the .def has a SEQUENCE)"}
+        {-seq-start {maybe int min 0} {} N "first sequence number (default: the .def's)"}
+        {-seq-incr {maybe int min 1} {} N "sequence number step (default: the .def's)"}
         {-program {int min 0} 1000 N "program number"}
+        {-insert {enum checked verbatim} checked MODE
+            "INSERT text: written when it reads as NC words of the dialect, else as a comment with a warning (checked), or as it is (verbatim)"}
+        {-warn any {} CMD "command prefix called with each warning (a MIN/MAX Warning of the .def, INSERT text not written)"}
     }
+    # The addresses this layer writes: every one must be in the .def.
+    variable Addresses {G_motion G_feed G_plane G_mode G_units G_length G_cycle
+        G_cutcom G_wcs G_machine G_return G_dwell X Y Z R Q P_ms P_s fourth_axis fifth_axis F F_inv S T H
+        M_spindle M_coolant M I J K G_rot G_tilt E_i E_j E_k D F_dwell
+        KX KY KZ K4 K5 KF KCX KCY KCZ SPA SPB SPC N}
 
     # Per dialect:
+    #   syntax     gcode or klartext
     #   program    the program-number line format ("" for none: the program
     #              comment stands alone, "(PROGRAM n)" when empty)
+    #   percent    1: % lines open and close the program
+    #   comment    the comment form: paren "(text)", semicolon "; text"
+    #              (G-code), or numbered "n ; text" (Klartext)
+    #   safety     the words of the safety line ({} none)
+    #   units      the G codes of mm and inch
+    #   length     how tool length compensation comes on: G43 (G43 H with
+    #              the first Z move after a tool change), D (D1 in the tool
+    #              change block), call (Klartext TOOL CALL)
+    #   machineZ   Z up in machine coordinates: G53 (G0 G49 G53 Z), SUPA
+    #              (G0 SUPA Z D0), M91 (L Z R0 FMAX M91)
+    #   inverse    1: inverse-time feed (G93) exists
+    #   tcp        {on LINES off LINES} of TCP mode: G43.4 (Fanuc: on the
+    #              first X Y Z block after a tool change, with H), else the
+    #              lines written before that block; {} when the control has
+    #              none of its own (LinuxCNC: the machine's tcp_codes)
+    #   plane      tilted work plane: g68.2, cycle800, spatial, or {} (none:
+    #              the planner writes the rotaries and machine coordinates)
+    #   arcs       the planes native arcs are written in ({} none), and
+    #              helix 1 when a helix is
+    #   dwell      a dwell time: P_ms (milliseconds), P_s or F_dwell
+    #              (seconds, G4 F), cycl9 (Klartext cycle 9)
+    #   cycles     canned cycle G codes by NX cycle event; a cycle the
+    #              control lacks is expanded into moves by the planner
+    #   letters    word letters an INSERT may use besides the machine's
+    #              axes (N and O are the post's); {} for none (Klartext:
+    #              INSERT text is always a comment unless -insert verbatim)
     #   active     comment words the controller would act on (defused)
-    #   dwell      the unit of G4 P: ms or s
     variable Dialects {
         fanuc {
-            program O%04d
+            syntax gcode program O%04d percent 1 comment paren
+            safety {G_cutcom 40 G_length 49 G_cycle 80} units {21 20}
+            length G43 machineZ G53 inverse 1
+            tcp {on G43.4 off {}} plane g68.2 arcs {planes {17 18 19} helix 1}
+            dwell P_ms
+            cycles {drill 81 drill_dwell 82 drill_deep 83 drill_break_chip 73 tap 84
+                bore 85 bore_drag 86 bore_no_drag 76 bore_back 87 bore_manual 88 bore_dwell 89}
+            letters {G M F S T H D P Q R I J K L}
             active {}
-            dwell ms
+        }
+        sinumerik {
+            syntax gcode program {} percent 0 comment semicolon
+            safety {G_cutcom 40} units {71 70}
+            length D machineZ SUPA inverse 1
+            tcp {on {TRAORI ORIWKS ORIAXES} off {TRAFOOF}} plane cycle800
+            arcs {planes {17 18 19} helix 1}
+            dwell F_dwell
+            cycles {}
+            letters {G M F S T D P Q R I J K L}
+            active {}
+        }
+        heidenhain {
+            syntax klartext program {} percent 0 comment numbered
+            safety {} units {MM INCH}
+            length call machineZ M91 inverse 0
+            tcp {on {{FUNCTION TCPM F TCP AXIS POS PATHCTRL AXIS}} off {{FUNCTION RESET TCPM}}}
+            plane spatial arcs {planes {17} helix 0}
+            dwell cycl9
+            cycles {}
+            letters {}
+            active {}
         }
         linuxcnc {
-            program {}
+            syntax gcode program {} percent 1 comment paren
+            safety {G_cutcom 40 G_length 49 G_cycle 80} units {21 20}
+            length G43 machineZ G53 inverse 1
+            tcp {} plane {} arcs {planes {17 18 19} helix 1}
+            dwell P_s
+            cycles {drill 81 drill_dwell 82 drill_deep 83 drill_break_chip 73 tap 84
+                bore 85 bore_drag 86 bore_back 87 bore_manual 88 bore_dwell 89}
+            letters {G M F S T H D P Q R I J K L}
             active {MSG DEBUG PRINT LOG LOGOPEN LOGAPPEND LOGCLOSE PROBEOPEN PROBECLOSE
                 ABORT PY PYRUN PYRELOAD}
-            dwell s
         }
     }
+    # The angle convention of each work-plane form (see lib/plane.tcl).
+    variable PlaneAngles {g68.2 zxz cycle800 xyz spatial spatial}
 }
 
 # ::fivax::output::create --
@@ -51,7 +137,8 @@ namespace eval ::fivax::output {
 #	machine file's 'output' dict gives defaults (its keys are the option
 #	names with _ for -: angle_decimals), the options override them.
 #	Errors: {FIVAX OUTPUT KEY} "<file>: output: unknown key 'x'" for a
-#	bad key of the machine file, {FIVAX OUTPUT VALUE} for a bad value.
+#	bad key of the machine file, {FIVAX OUTPUT VALUE} for a bad value or
+#	a TCP mode the control cannot take.
 proc ::fivax::output::create {machine args} {
     variable Options
     set src [dict get $machine file]
@@ -59,7 +146,7 @@ proc ::fivax::output::create {machine args} {
     dict for {key value} [dict get $machine output] {
         set opt -[string map {_ -} $key]
         if {[string first - $key] >= 0 || $opt ni [::fivax::opts::names $Options]
-                || $opt eq "-controller"} {
+                || $opt in {-controller -def -warn -tcp}} {
             ::fivax::Fail OUTPUT KEY "$src: output: unknown key '$key'"
         }
         try {
@@ -74,25 +161,43 @@ proc ::fivax::output::create {machine args} {
         ::fivax::Fail OUTPUT VALUE "$src: controller: unknown dialect '$controller': must be\
             [join [dict keys $::fivax::output::Dialects] {, }]"
     }
-    lappend fromMachine -controller $controller
-    Writer new $machine [::fivax::opts::parse $Options [concat $fromMachine $args] "output create"]
+    lappend fromMachine -controller $controller -tcp [dict get $machine tcp]
+    set opts [::fivax::opts::parse $Options [concat $fromMachine $args] "output create"]
+    if {![dict size [dict get $opts -def]]} {
+        ::fivax::Fail OPTION MISSING "output create: -def (the post's .def) is required"
+    }
+    set dialect [dict get $::fivax::output::Dialects [dict get $opts -controller]]
+    if {[dict get $opts -tcp] && ![llength [dict get $dialect tcp]]
+            && ![llength [dict get $machine tcp_codes]]} {
+        ::fivax::Fail OUTPUT VALUE "$src: TCP mode on [dict get $opts -controller]: the control\
+            switches TCP by the machine's own M codes: set tcp_codes {on off} in the machine file"
+    }
+    Writer new $machine $opts
 }
 
 oo::class create ::fivax::output::Writer {
     # nc: the block Writer; cfg: options; dialect: its table entry;
     # rotaries: {name chainIndex rollover} in output order (the 4th axis
     # word first); length: the H register to activate with the next Z
-    # move (0: none); feedMode: inverse or direct of the last feed block.
-    variable nc cfg dialect machine rotaries length feedMode
+    # move (0: none); tcpArmed: 1 when TCP comes on with the next block
+    # that writes X, Y or Z; tcpOn: TCP is active; feedMode: inverse or
+    # direct of the last feed block; cycle: the G code of the active
+    # canned cycle (0: none); pendingTool: the Klartext tool whose TOOL
+    # CALL waits for its spindle speed; planeOn: a work plane is active;
+    # register: the length register of the tool in the spindle; program:
+    # the Klartext program name; arcPlane: the plane of the last arc;
+    # atSafe: nothing has moved since the last Z up in machine coordinates.
+    # After G80 Z and the motion code are
+    # written again: the tool stands at the initial level, and the motion
+    # mode is stated afresh.
+    variable nc cfg dialect machine rotaries length tcpArmed tcpOn feedMode cycle \
+        pendingTool planeOn register program arcPlane atSafe
 
     constructor {aMachine opts} {
         set machine $aMachine
         set cfg $opts
         set dialect [dict get $::fivax::output::Dialects [dict get $cfg -controller]]
-        set nc [::fivax::nc::create -sequence [dict get $cfg -sequence] \
-            -seq-start [dict get $cfg -seq-start] -seq-incr [dict get $cfg -seq-incr]]
         set names [::fivax::machine::rotaryNames $machine]
-        set rotaries {}
         set i 0
         foreach axis [dict get $machine chain] {
             set slot [lsearch -exact $names [dict get $axis name]]
@@ -101,121 +206,413 @@ oo::class create ::fivax::output::Writer {
         }
         set rotaries $names
         set length 0
+        set tcpArmed 0
+        set tcpOn 0
         set feedMode direct
-        my Addresses
+        set cycle 0
+        set pendingTool ""
+        set planeOn 0
+        set register 0
+        set arcPlane 17
+        set atSafe 0
+        set program PART
+        set nc [::fivax::nc::create -sequence 0 -warn [dict get $cfg -warn]]
+        my Define [dict get $cfg -def]
     }
 
     destructor {
         if {[info exists nc]} {$nc destroy}
     }
 
-    # Defines the addresses of the blocks this layer writes.
-    method Addresses {} {
-        set dec %.[dict get $cfg -decimals]f
-        set ang %.[dict get $cfg -angle-decimals]f
-        set feed %.[dict get $cfg -feed-decimals]f
-        set inv %.[dict get $cfg -inverse-decimals]f
+    # Defines the addresses of the .def def on the block writer, resolves
+    # their leaders and applies the decimal and numbering options. Klartext
+    # numbers every line from 0 in steps of 1, without a leader.
+    method Define {def} {
+        set defined [::fivax::def::configure $nc $def]
+        foreach name $::fivax::output::Addresses {
+            if {$name ni $defined} {
+                ::fivax::Fail OUTPUT DEF "the post's .def has no ADDRESS $name"
+            }
+        }
         lassign [lmap r $rotaries {lindex $r 0}] r4 r5
-        foreach {name leader fmt force} [list \
-            G_motion G %g off  G_feed G %g off  G_plane G %g off \
-            G_mode G %g off  G_units G %g off  G_length G %g off \
-            X X $dec off  Y Y $dec off  Z Z $dec off \
-            fourth_axis $r4 $ang off  fifth_axis $r5 $ang off \
-            F F $feed off  F_inv F $inv always  S S %d off  T T %d always  H H %d off \
-            M_spindle M %g off  M_coolant M %g off  M M %g always] {
-            $nc address $name -leader $leader -format $fmt -force $force
+        set leaders [dict create X X Y Y Z Z N N fourth_axis $r4 fifth_axis $r5]
+        dict for {name a} [dict get $def addresses] {
+            if {[dict get $a leader_expr] eq ""} continue
+            if {![regexp {^\s*\$mom_sys_leader\((\w+)\)\s*$} [dict get $a leader_expr] -> key]
+                    || ![dict exists $leaders $key]} {
+                ::fivax::Fail OUTPUT DEF "the post's .def: ADDRESS $name: unsupported LEADER\
+                    \[[dict get $a leader_expr]\] (the output layer knows\
+                    \[\$mom_sys_leader(NAME)\] for [join [dict keys $leaders] {, }])"
+            }
+            $nc address $name -leader [dict get $leaders $key]
+        }
+        foreach {opt addresses sign} {-decimals {X Y Z I J K} "" -decimals {KX KY KZ KCX KCY KCZ} +
+                -angle-decimals {fourth_axis fifth_axis} "" -angle-decimals {K4 K5} +
+                -feed-decimals {F KF} "" -inverse-decimals F_inv ""} {
+            set d [dict get $cfg $opt]
+            if {$d eq ""} continue
+            foreach name $addresses {$nc address $name -format %${sign}.${d}f}
+        }
+        if {[dict get $dialect syntax] eq "klartext"} {
+            $nc address N -leader "" -max {999999999 abort}
+            $nc configure -seq-start 0 -seq-incr 1 -seq-max 999999999
+            $nc sequence on
+            return
+        }
+        set seq [dict get $def sequence]
+        set on [dict get $cfg -sequence]
+        if {$on eq ""} {set on [expr {[llength $seq] > 0}]}
+        $nc sequence [expr {$on ? "on" : "off"}]
+        foreach opt {-seq-start -seq-incr} {
+            if {[dict get $cfg $opt] ne ""} {$nc configure $opt [dict get $cfg $opt]}
         }
     }
 
-    # Returns the rotary output resolution (degrees) the planner rounds to.
+    # Returns the rotary output resolution (degrees) the planner rounds
+    # to: one unit of the last decimal of the fourth axis's format.
     method angleStep {} {
-        expr {10.0 ** -[dict get $cfg -angle-decimals]}
+        set addr [expr {[dict get $dialect syntax] eq "klartext" ? "K4" : "fourth_axis"}]
+        expr {10.0 ** -[$nc decimals $addr]}
+    }
+
+    # Returns {length angle}: the output resolution of X (file units) and
+    # of the rotaries (degrees), one unit of their last decimal.
+    method resolution {} {
+        set addr [expr {[dict get $dialect syntax] eq "klartext" ? "KX" : "X"}]
+        list [expr {10.0 ** -[$nc decimals $addr]}] [my angleStep]
+    }
+
+    # Returns what the dialect can write, for the planner: a dict of
+    # controller, inverse (G93 exists), plane (a work plane exists), arcPlanes (the
+    # planes of native arcs), helix (1: helical arcs), tcp (TCP mode on).
+    method capabilities {} {
+        dict create controller [dict get $cfg -controller] inverse [dict get $dialect inverse] \
+            plane [expr {[dict get $dialect plane] ne "" && ![dict get $cfg -tcp]}] \
+            arcPlanes [dict get $dialect arcs planes] helix [dict get $dialect arcs helix] \
+            tcp [dict get $cfg -tcp]
     }
 
     # Returns the program-start lines: the dialect's program header
-    # carrying comment, then units, absolute mode, feed mode and plane.
-    method start {comment} {
-        set lines [list %]
-        set program [dict get $dialect program]
+    # carrying comment (Klartext: BEGIN PGM name), the safety line (no
+    # cutter, length or cycle compensation active), units, absolute mode,
+    # feed mode and plane, then the machine's work offset.
+    method start {comment {name PART}} {
+        lassign [dict get $dialect units] mm inch
+        set unit [expr {[dict get $machine units] eq "inch" ? $inch : $mm}]
+        if {[dict get $dialect syntax] eq "klartext"} {
+            set program [regsub -all {[^A-Za-z0-9_]} $name _]
+            if {$program eq ""} {set program PART}
+            return [list [$nc line "BEGIN PGM $program $unit"] [my comment $comment]]
+        }
+        set lines {}
+        if {[dict get $dialect percent]} {lappend lines %}
+        set format [dict get $dialect program]
         set number [dict get $cfg -program]
         set text [my Sanitise $comment]
-        if {$program ne ""} {
-            set line [format $program $number]
+        if {$format ne ""} {
+            set line [format $format $number]
             if {$text ne ""} {append line " ($text)"}
             lappend lines $line
         } else {
             if {$text eq ""} {set text "PROGRAM $number"}
-            lappend lines ($text)
+            lappend lines [my comment $text]
         }
-        lappend lines [$nc block [list G_units \
-            [expr {[dict get $machine units] eq "inch" ? 20 : 21}] G_mode 90 G_feed 94 G_plane 17]]
+        if {[llength [dict get $dialect safety]]} {
+            lappend lines [$nc block [dict get $dialect safety]]
+        }
+        lappend lines [$nc block [list G_units $unit G_mode 90 G_feed 94 G_plane 17]] \
+            [$nc block [list G_wcs [dict get $machine work_offset]]]
     }
 
-    # Returns text as a comment line in the dialect's style, never numbered.
+    # Returns text as one comment line in the dialect's style (G-code:
+    # never numbered; Klartext: numbered, as every line is).
     method comment {text} {
-        return ([my Sanitise $text])
+        set text [my Sanitise $text]
+        switch -exact -- [dict get $dialect comment] {
+            paren {return ($text)}
+            semicolon {return "; $text"}
+            numbered {return [$nc line "; $text"]}
+        }
     }
 
-    # Returns the tool change block for tool number, and arms the length
-    # compensation register adjust (0: none) for the next Z move. Modal
-    # memory is reset: everything is written again after a tool change.
+    # Returns the tool change blocks for tool number: Z up to the
+    # tool-change height (see safeZ), then the dialect's change (T M6;
+    # Sinumerik T M6 D1; Klartext TOOL CALL, written with the spindle
+    # speed when it comes, see spindle); arms the length compensation
+    # register adjust (0: none) for the next Z move, and TCP mode for the
+    # next X Y Z block. Modal memory is reset: everything is written
+    # again after a tool change.
     method toolChange {number adjust} {
-        set line [$nc block [list T $number M 6]]
+        set lines [my safeZ]
+        switch -exact -- [dict get $dialect length] {
+            G43 {lappend lines [$nc block [list T $number M 6]]}
+            D {lappend lines [$nc block [list T $number M 6 D 1]]}
+            call {set pendingTool $number}
+        }
         $nc reset
-        set length $adjust
-        return [list $line]
+        set register [expr {[dict get $dialect length] eq "G43" ? $adjust : 0}]
+        set length $register
+        set tcpArmed [dict get $cfg -tcp]
+        return $lines
     }
 
-    # Returns the spindle-on block: speed (rpm), direction CLW or CCLW.
+    # Returns the blocks that take the spindle up to the machine's
+    # tool-change height with TCP and length compensation cancelled (in
+    # machine coordinates: G0 G49 G53 Z<tool_change_z>, Sinumerik G0 SUPA
+    # Z D0, Klartext L Z R0 FMAX M91), ending an active cycle first. The
+    # written Z is forgotten: the next Z is in the work frame.
+    # Nothing when nothing has moved since the last one.
+    method safeZ {} {
+        if {$atSafe} {return {}}
+        set atSafe 1
+        set lines [concat [my CycleOff] [my TcpOff]]
+        set z [dict get $machine tool_change_z]
+        switch -exact -- [dict get $dialect machineZ] {
+            G53 {
+                set length 0
+                $nc force once {G_motion Z}
+                lappend lines [$nc block [list G_motion 0 G_length 49 G_machine 53 Z $z]]
+            }
+            SUPA {
+                $nc force once {G_motion Z}
+                lappend lines [$nc block [list G_motion 0 "" SUPA Z $z D 0]]
+            }
+            M91 {
+                $nc force once KZ
+                lappend lines [my Klartext [list KZ $z] "R0 FMAX M91"]
+            }
+        }
+        $nc reset [expr {[dict get $dialect syntax] eq "klartext" ? "KZ" : "Z"}]
+        return $lines
+    }
+
+    # Returns the spindle-on blocks: speed (rpm), direction CLW or CCLW
+    # (Klartext: the waiting TOOL CALL with S, or TOOL CALL Z S, then M3).
     method spindle {speed direction} {
-        list [$nc block [list S [expr {round($speed)}] M_spindle \
-            [expr {$direction eq "CCLW" ? 4 : 3}]]]
+        set m [expr {$direction eq "CCLW" ? 4 : 3}]
+        set speed [expr {round($speed)}]
+        if {[dict get $dialect syntax] eq "klartext"} {
+            set call [expr {$pendingTool ne "" ? "TOOL CALL $pendingTool Z" : "TOOL CALL Z"}]
+            set pendingTool ""
+            return [concat [list [$nc line "$call S$speed"]] [my KlartextM [list M_spindle $m]]]
+        }
+        concat [my CycleOff] [list [$nc block [list S $speed M_spindle $m]]]
     }
 
     # Returns the spindle-off block.
     method spindleOff {} {
-        list [$nc block {M_spindle 5}]
+        if {[dict get $dialect syntax] eq "klartext"} {return [my KlartextM {M_spindle 5}]}
+        concat [my CycleOff] [list [$nc block {M_spindle 5}]]
     }
 
     # Returns the coolant-on block for mode (MIST: M7, else M8).
     method coolant {mode} {
-        list [$nc block [list M_coolant [expr {$mode eq "MIST" ? 7 : 8}]]]
+        set m [expr {$mode eq "MIST" ? 7 : 8}]
+        if {[dict get $dialect syntax] eq "klartext"} {return [my KlartextM [list M_coolant $m]]}
+        list [$nc block [list M_coolant $m]]
     }
 
     # Returns the coolant-off block.
     method coolantOff {} {
+        if {[dict get $dialect syntax] eq "klartext"} {return [my KlartextM {M_coolant 9}]}
         list [$nc block {M_coolant 9}]
     }
 
-    # Returns the program stop block (optional: M1, else M0).
+    # Returns the program stop block (optional: M1, else M0; Klartext STOP).
     method stop {optional} {
-        list [$nc block [list M [expr {$optional ? 1 : 0}]]]
-    }
-
-    # Returns the dwell block for seconds (G4 P in the dialect's unit).
-    method dwell {seconds} {
-        if {[dict get $dialect dwell] eq "s"} {
-            return [list [$nc line "G4 P[::fivax::num::fixed $seconds 3]"]]
+        if {[dict get $dialect syntax] eq "klartext"} {
+            return [list [$nc line [expr {$optional ? "L M1" : "STOP"}]]]
         }
-        list [$nc line [format "G4 P%d" [expr {round($seconds * 1000)}]]]
+        concat [my CycleOff] [list [$nc block [list M [expr {$optional ? 1 : 0}]]]]
     }
 
-    # Returns text as an NC line as it is.
-    method literal {text} {
-        list $text
+    # Returns the dwell blocks for seconds (G4 P or F in the dialect's
+    # unit; Klartext cycle 9).
+    method dwell {seconds} {
+        if {[dict get $dialect dwell] eq "cycl9"} {
+            return [list [$nc line "CYCL DEF 9.0 DWELL TIME"] \
+                [$nc line "CYCL DEF 9.1 DWELL [::fivax::num::fixed $seconds 3]"]]
+        }
+        concat [my CycleOff] [list [$nc block [concat {G_dwell 4} [my DwellWords $seconds]]]]
     }
 
-    # Returns the block of the move record rec (see ::fivax::motion
-    # flush): G0 or G1, length compensation with the first Z move after a
-    # tool change, G93/G94 and F for feed moves, and the axes in its
-    # write list in machine units and degrees (a rotary that rolls over
-    # written in [0, 360)).
-    method move {rec} {
-        set isFeed [expr {[dict get $rec kind] eq "feed"}]
-        set write [dict get $rec write]
+    # Returns the words of a dwell time of seconds in the dialect's unit.
+    method DwellWords {seconds} {
+        set addr [dict get $dialect dwell]
+        list $addr [expr {$addr eq "P_ms" ? $seconds * 1000.0 : $seconds}]
+    }
+
+    # Returns 1 when the dialect has the canned cycle of NX cycle event.
+    method canCycle {event} {
+        dict exists $dialect cycles $event
+    }
+
+    # Returns the canned-cycle cancel block (G80) when a cycle is active.
+    method cycleOff {} {
+        my CycleOff
+    }
+
+    # Returns {G80 block} and forgets the active cycle, or {} when none is
+    # active. After a canned cycle the tool stands at the initial level,
+    # not at the last written Z: Z is written again.
+    method CycleOff {} {
+        if {!$cycle} {return {}}
+        set cycle 0
+        $nc reset {Z G_motion}
+        list [$nc block {G_cycle 80}]
+    }
+
+    # Returns the lines that end TCP mode when it is on (none for Fanuc:
+    # the G49 of the next Z up ends G43.4).
+    method TcpOff {} {
+        set tcpArmed 0
+        if {!$tcpOn} {return {}}
+        set tcpOn 0
+        if {[dict get $dialect tcp] eq ""} {
+            return [list [$nc line M[lindex [dict get $machine tcp_codes] 1]]]
+        }
+        lmap text [dict get $dialect tcp off] {$nc line $text}
+    }
+
+    # Returns the lines that start TCP mode before a block writing any of
+    # X Y Z in axes when TCP is armed, and {} (Fanuc's G43.4 goes into
+    # that block itself: see move).
+    method TcpOn {axes} {
+        if {!$tcpArmed || ![llength [lmap a {X Y Z} {if {$a in $axes} {set a} else continue}]]
+                || [my TcpInBlock]} {
+            return {}
+        }
+        set tcpArmed 0
+        set tcpOn 1
+        if {[dict get $dialect tcp] eq ""} {
+            return [list [$nc line M[lindex [dict get $machine tcp_codes] 0]]]
+        }
+        lmap text [dict get $dialect tcp on] {$nc line $text}
+    }
+
+    # Returns 1 when TCP comes on inside a motion block (Fanuc G43.4 H).
+    method TcpInBlock {} {
+        set tcp [dict get $dialect tcp]
+        expr {$tcp ne "" && [dict get $tcp on] eq "G43.4"}
+    }
+
+    # Returns the block of a hole record (kind cycle, see ::fivax::motion
+    # hole): the first of a cycle with G98, the cycle's G code, X Y, Z at
+    # the bottom, R, Q (peck) or P (dwell), F; the next ones of the same
+    # cycle with what changed.
+    method Cycle {rec} {
+        set atSafe 0
         set axes [dict get $rec axes]
+        set event [dict get $rec event]
+        # a deep or chip-breaking drill without a peck depth drills in one go
+        if {$event in {drill_deep drill_break_chip} && [dict get $rec step] <= 0} {
+            set event drill
+        }
+        set code [dict get $dialect cycles $event]
+        set lines {}
+        if {$code != $cycle} {
+            set lines [my CycleOff]
+            set cycle $code
+            $nc force once {G_cycle G_return Z R F Q}
+        }
+        set words {}
+        if {$arcPlane != 17} {
+            # after an arc in G18 or G19: the cycle drills along Z again
+            lappend words G_plane 17
+            set arcPlane 17
+        }
+        lappend words G_return 98 G_cycle $code
+        if {$feedMode eq "inverse"} {
+            lappend words G_feed 94
+            set feedMode direct
+        }
+        lappend words X [dict get $axes X] Y [dict get $axes Y] Z [dict get $axes Z] \
+            R [dict get $rec r]
+        if {$code in {83 73} && [dict get $rec step] > 0} {
+            lappend words Q [dict get $rec step]
+        }
+        if {$code in {82 89}} {
+            lappend words {*}[my DwellWords [dict get $rec delay]]
+        }
+        lappend words F [dict get $rec rate]
+        lappend lines [$nc block $words]
+    }
+
+    # Returns INSERT text as an NC line when it reads as NC words of the
+    # dialect (see NotWords) or -insert is verbatim; else as a comment,
+    # with a warning.
+    method literal {text} {
+        if {[dict get $cfg -insert] eq "verbatim"} {return [list $text]}
+        set why [my NotWords $text]
+        if {$why eq ""} {return [list $text]}
+        set warn [dict get $cfg -warn]
+        if {[llength $warn]} {
+            {*}$warn "INSERT text written as a comment: $why (-insert verbatim writes it as it is)"
+        }
+        list [my comment $text]
+    }
+
+    # Returns what keeps text from being a line of NC words ("" when it
+    # is one): after its ( ) comments, whitespace-separated words of an
+    # upper-case letter and a number, the letter one of the machine's
+    # axes or the dialect's letters.
+    method NotWords {text} {
+        if {![llength [dict get $dialect letters]]} {
+            return "[dict get $cfg -controller] takes no NC words from the CL"
+        }
+        set letters [concat {X Y Z} [lmap r $rotaries {lindex $r 0}] [dict get $dialect letters]]
+        set words [regsub -all {\([^()]*\)} $text " "]
+        if {[string first ( $words] >= 0 || [string first ) $words] >= 0} {
+            return "unbalanced parentheses"
+        }
+        foreach word [regexp -all -inline {\S+} $words] {
+            if {![regexp {^([A-Z])[-+]?(\d+\.?\d*|\.\d+)$} $word -> letter]} {
+                return "'$word' is no NC word"
+            }
+            if {$letter ni $letters} {
+                return "the letter $letter is not one of [join $letters {, }]"
+            }
+        }
+        return ""
+    }
+
+    # Returns the blocks of the move record rec (see ::fivax::motion
+    # flush): G0 or G1 (Klartext L with FMAX or F), length compensation
+    # with the first Z move after a tool change, TCP with the first X Y Z
+    # move, G93/G94 and F for feed moves, and the axes in its write list
+    # in machine units and degrees (a rotary that rolls over written in
+    # [0, 360)); arcs, work planes, holes and dwells by their kind.
+    method move {rec} {
+        switch -- [dict get $rec kind] {
+            cycle {return [my Cycle $rec]}
+            dwell {return [my dwell [dict get $rec seconds]]}
+            arc {return [my Arc $rec]}
+            plane {return [my PlaneOn $rec]}
+            planeOff {return [my PlaneOff]}
+        }
+        set write [dict get $rec write]
+        if {![llength $write]} {
+            # a positioning move that moves no axis here (a work plane's
+            # rotaries are the control's)
+            return {}
+        }
+        set atSafe 0
+        set lines [my CycleOff]
+        set isFeed [expr {[dict get $rec kind] eq "feed"}]
+        set axes [dict get $rec axes]
+        lappend lines {*}[my TcpOn $write]
+        if {[dict get $dialect syntax] eq "klartext"} {
+            return [concat $lines [my KlartextMove $rec $isFeed]]
+        }
         set words [list G_motion $isFeed]
-        if {$length && "Z" in $write} {
+        if {$tcpArmed && [my TcpInBlock]
+                && [llength [lmap a {X Y Z} {if {$a in $write} {set a} else continue}]]} {
+            # TCP on (Fanuc): G43.4 H with the first X Y Z block
+            lappend words G_length 43.4 H $length
+            set length 0
+            set tcpArmed 0
+            set tcpOn 1
+        } elseif {$length && "Z" in $write} {
             lappend words G_length 43 H $length
             set length 0
         }
@@ -226,33 +623,208 @@ oo::class create ::fivax::output::Writer {
             if {!$inverse && $feedMode eq "inverse"} {$nc force once F}
             set feedMode [expr {$inverse ? "inverse" : "direct"}]
         }
-        foreach name {X Y Z} {
-            if {$name in $write} {lappend words $name [dict get $axes $name]}
+        lappend words {*}[my AxisWords $rec {X Y Z} {fourth_axis fifth_axis}]
+        if {$isFeed} {
+            lappend words [expr {$inverse ? "F_inv" : "F"}] [dict get $rec rate]
         }
-        foreach r $rotaries addr {fourth_axis fifth_axis} {
+        lappend lines [$nc block $words]
+    }
+
+    # Returns the address words of the axes in rec's write list, by the
+    # addresses of X Y Z (xyz) and of the two rotaries (rot).
+    method AxisWords {rec xyz rot} {
+        set write [dict get $rec write]
+        set axes [dict get $rec axes]
+        set words {}
+        foreach name {X Y Z} addr $xyz {
+            if {$name in $write} {lappend words $addr [dict get $axes $name]}
+        }
+        foreach r $rotaries addr $rot {
             lassign $r name - roll
             if {$name ni $write} continue
             set deg [::fivax::num::deg [dict get $axes $name]]
             if {$roll} {
                 # wrap the written value (rounded first, so 359.9996 is 0.000)
-                set step [my angleStep]
+                set step [expr {10.0 ** -[$nc decimals $addr]}]
                 set deg [expr {round($deg / $step) * $step}]
                 set deg [expr {fmod(fmod($deg, 360.0) + 360.0, 360.0)}]
             }
             lappend words $addr $deg
         }
+        return $words
+    }
+
+    # Returns the Klartext L block of a move record: the changed axes,
+    # R0, and FMAX or F (the feed in mm/min; a feed block after a rapid
+    # states F again). The waiting TOOL CALL comes first.
+    method KlartextMove {rec isFeed} {
+        set lines [my ToolCall]
+        set words [my AxisWords $rec {KX KY KZ} {K4 K5}]
         if {$isFeed} {
-            lappend words [expr {$inverse ? "F_inv" : "F"}] [dict get $rec rate]
+            if {$feedMode ne "feed"} {$nc force once KF}
+            set feedMode feed
+            set tail "R0 [my Quiet [list KF [dict get $rec rate]]]"
+        } else {
+            set feedMode rapid
+            set tail "R0 FMAX"
         }
-        list [$nc block $words]
+        lappend lines [my Klartext $words [string trimright $tail]]
     }
 
-    # Returns the program-end lines: spindle and coolant off, M30, %.
+    # Returns the numbered Klartext line "L <words> tail" (the words
+    # through the modal memory; nothing when no axis changes).
+    method Klartext {words tail} {
+        set text [my Quiet $words]
+        if {$text eq ""} {return {}}
+        $nc line "L $text $tail"
+    }
+
+    # Returns the text of the address words through the modal memory,
+    # without a sequence number.
+    method Quiet {words} {
+        set old [$nc sequence off]
+        try {
+            $nc block $words
+        } finally {
+            $nc sequence $old
+        }
+    }
+
+    # Returns the Klartext line "L M.." of the M words (through the modal
+    # memory: nothing when they are in effect already).
+    method KlartextM {words} {
+        set text [my Quiet $words]
+        if {$text eq ""} {return {}}
+        list [$nc line "L $text"]
+    }
+
+    # Returns the waiting Klartext TOOL CALL (without a speed), or nothing.
+    method ToolCall {} {
+        if {$pendingTool eq ""} {return {}}
+        set line [$nc line "TOOL CALL $pendingTool Z"]
+        set pendingTool ""
+        list $line
+    }
+
+    # Returns the blocks of an arc record (kind arc: start, end axes,
+    # centre, plane 17/18/19, dir 2 clockwise / 3 counter-clockwise about
+    # the plane's normal, feed): G17..G19 G2/G3 with the end and the
+    # centre from the start as I J K; Klartext CC and C DR-/DR+.
+    method Arc {rec} {
+        set atSafe 0
+        set lines [concat [my CycleOff] [my ToolCall]]
+        set plane [dict get $rec plane]
+        lassign [dict get $rec start] sx sy sz
+        lassign [dict get $rec center] cx cy cz
+        set dir [dict get $rec dir]
+        if {[dict get $dialect syntax] eq "klartext"} {
+            lappend lines [$nc line "CC [my Quiet [list KCX $cx KCY $cy]]"]
+            if {$feedMode ne "feed"} {$nc force once KF}
+            set feedMode feed
+            $nc force once {KX KY}
+            set xy [my Quiet [list KX [dict get $rec axes X] KY [dict get $rec axes Y]]]
+            lappend lines [$nc line "C $xy DR[expr {$dir == 2 ? "-" : "+"}] R0\
+                [my Quiet [list KF [dict get $rec rate]]]"]
+            return $lines
+        }
+        set offsets [dict get {17 {I J} 18 {I K} 19 {J K}} $plane]
+        # centre offsets from the start as written (rounded)
+        set d [$nc decimals X]
+        set words [list G_plane $plane G_motion $dir]
+        set arcPlane $plane
+        if {$feedMode eq "inverse"} {
+            lappend words G_feed 94
+            $nc force once F
+            set feedMode direct
+        }
+        lappend words {*}[my AxisWords $rec {X Y Z} {fourth_axis fifth_axis}]
+        foreach name {I J K} s [list $sx $sy $sz] c [list $cx $cy $cz] {
+            if {$name in $offsets} {
+                lappend words $name [expr {$c - [::fivax::num::fixed $s $d]}]
+            }
+        }
+        lappend words F [dict get $rec rate]
+        lappend lines [$nc block $words]
+    }
+
+    # Returns the blocks that tilt the work plane of a plane record
+    # (matrix R: columns X' Y' Z', origin O, seq: the sign the control's
+    # tilt takes): Z up, then Fanuc G68.2 X Y Z I J K (Euler ZXZ) + G53.1
+    # and G43 again with the next Z; Sinumerik CYCLE800 (mode 57);
+    # Klartext PLANE SPATIAL .. TURN MB MAX FMAX SEQ. The rotaries turn
+    # without being written: their modal memory is cleared.
+    method PlaneOn {rec} {
+        set form [dict get $dialect plane]
+        set angles [::fivax::plane::angles [dict get $::fivax::output::PlaneAngles $form] \
+            [dict get $rec matrix]]
+        lassign [dict get $rec origin] ox oy oz
+        set lines [concat [my safeZ] [my ToolCall]]
+        switch -exact -- $form {
+            g68.2 {
+                lassign $angles i j k
+                lappend lines [$nc block [list G_rot 68.2 X $ox Y $oy Z $oz E_i $i E_j $j E_k $k]] \
+                    [$nc block {G_tilt 53.1}]
+                set length $register
+            }
+            cycle800 {
+                set a [lmap v [concat [list $ox $oy $oz] $angles] {::fivax::num::fixed $v 4}]
+                lassign $a x y z aa bb cc
+                lappend lines [$nc line "CYCLE800(1,\"[dict get $machine swivel_record]\",0,57,$x,$y,$z,$aa,$bb,$cc,0,0,0,[dict get $rec seq],100,1)"] \
+                    [$nc block {D 1}]
+            }
+            spatial {
+                lassign $angles a b c
+                lappend lines [$nc line "PLANE SPATIAL [my Quiet [list SPA $a SPB $b SPC $c]] TURN MB MAX FMAX SEQ[expr {[dict get $rec seq] < 0 ? "-" : "+"}]"]
+            }
+        }
+        set planeOn 1
+        $nc reset
+        return $lines
+    }
+
+    # Returns the blocks that end the work plane: Z up, then G69,
+    # CYCLE800() or PLANE RESET STAY.
+    method PlaneOff {} {
+        if {!$planeOn} {return {}}
+        set planeOn 0
+        set lines [my safeZ]
+        switch -exact -- [dict get $dialect plane] {
+            g68.2 {lappend lines [$nc block {G_rot 69}]}
+            cycle800 {lappend lines [$nc line "CYCLE800()"]}
+            spatial {lappend lines [$nc line "PLANE RESET STAY"]}
+        }
+        $nc reset
+        return $lines
+    }
+
+    # Returns the program-end lines: the work plane ended, Z up to the
+    # tool-change height, the rotaries to 0 when the machine's
+    # home_rotaries is 1, spindle and coolant off, M30 (Klartext: END PGM),
+    # % where the dialect has it.
     method end {} {
-        list [$nc block {M_spindle 5 M_coolant 9}] [$nc line M30] %
+        set lines [concat [my PlaneOff] [my safeZ]]
+        set klartext [expr {[dict get $dialect syntax] eq "klartext"}]
+        if {[dict get $machine home_rotaries]} {
+            if {$klartext} {
+                $nc force once {K4 K5}
+                lappend lines [my Klartext {K4 0.0 K5 0.0} "R0 FMAX"]
+            } else {
+                $nc force once {G_motion fourth_axis fifth_axis}
+                lappend lines [$nc block {G_motion 0 fourth_axis 0.0 fifth_axis 0.0}]
+            }
+        }
+        if {$klartext} {
+            lassign [dict get $dialect units] mm inch
+            set unit [expr {[dict get $machine units] eq "inch" ? $inch : $mm}]
+            return [concat $lines [my KlartextM {M_spindle 5 M_coolant 9}] [list [$nc line "L M30"] \
+                [$nc line "END PGM $program $unit"]]]
+        }
+        lappend lines [$nc block {M_spindle 5 M_coolant 9}] [$nc line M30]
+        if {[dict get $dialect percent]} {lappend lines %}
+        return $lines
     }
 
-    # Returns text made safe for the inside of a ( ) comment: parentheses
+    # Returns text made safe for the inside of a comment: parentheses
     # become [ ], line breaks and control characters spaces, % becomes _,
     # and a leading word the controller would act on (with or without its
     # comma) is defused with _.

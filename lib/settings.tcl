@@ -10,20 +10,24 @@ namespace eval ::fivax::settings {
     variable Job {
         {-machine text {} FILE "machine file (default: the post's machine, machines/hh-tilt45.tcl)"}
         {-arc-tol {real gt 0} 0.002 MM "chord tolerance of arcs written as points"}
+        {-log text {} FILE
+            "file for warnings, retracts and errors (default: <output>.log beside the NC file when the host names it)"}
     }
 }
 
 # ::fivax::settings::table --
 #	Returns the option table of a posting job: -machine, -controller (the
-#	output layer's dialects; default: the machine's), -arc-tol and the
-#	planner's options but -angle-step (set from the output resolution).
+#	output layer's dialects; default: the machine's), -arc-tol, -log, the
+#	output layer's -insert and the planner's options but -angle-step and
+#	-output (set from the output layer: its resolution and what it writes).
 proc ::fivax::settings::table {} {
     variable Job
     set controllers [dict keys $::fivax::output::Dialects]
     concat [lrange $Job 0 0] \
         [list [list -controller [list maybe enum {*}$controllers] {} NAME \
             "controller dialect: [join $controllers {, }] (default: the machine's)"]] \
-        [lrange $Job 1 end] [::fivax::opts::drop $::fivax::motion::Options -angle-step]
+        [lrange $Job 1 end] [list [lsearch -inline -index 0 $::fivax::output::Options -insert]] \
+        [::fivax::opts::drop $::fivax::motion::Options {-angle-step -output}]
 }
 
 # ::fivax::settings::parse --
@@ -50,14 +54,15 @@ proc ::fivax::settings::pick {settings module} {
 
 # ::fivax::settings::check --
 #	Checks the settings (a parsed settings dict) that depend on machine (a
-#	fivax::machine dict): -tol and -atol are 0 (off) or at least the
-#	output resolution of X Y Z and of the rotaries, -arc-tol at least that
-#	of X Y Z (a finer tolerance can never be met, and chasing it
-#	multiplies the work without bound);
-#	-table-offset and -clearance are lengths the machine file could hold.
-#	who prefixes messages. Errors: {FIVAX OPTION VALUE} naming the option.
-proc ::fivax::settings::check {settings machine {who fivax_settings}} {
-    lassign [Resolution $machine] mm deg
+#	fivax::machine dict) and on resolution ({length angle}, the output
+#	layer's resolution of X Y Z and of the rotaries): -tol and -atol are 0
+#	(off) or at least that resolution, -arc-tol at least that of X Y Z (a
+#	finer tolerance can never be met, and chasing it multiplies the work
+#	without bound); -table-offset and -clearance are lengths the machine
+#	file could hold. who prefixes messages. Errors: {FIVAX OPTION VALUE}
+#	naming the option.
+proc ::fivax::settings::check {settings machine resolution {who fivax_settings}} {
+    lassign $resolution mm deg
     foreach {opt res unit what} [list -tol $mm "" "X Y Z" -atol $deg " deg" "the rotary axes" \
             -arc-tol $mm "" "X Y Z"] {
         set v [dict get $settings $opt]
@@ -75,21 +80,5 @@ proc ::fivax::settings::check {settings machine {who fivax_settings}} {
                     must be at most [format %g $max] in magnitude"
             }
         }
-    }
-}
-
-# ::fivax::settings::Resolution --
-#	Returns {mm deg}: the smallest step of the written X Y Z and rotary
-#	words (10^-decimals), from the machine's output dict or the output
-#	layer's defaults.
-proc ::fivax::settings::Resolution {machine} {
-    set defaults [::fivax::opts::parse $::fivax::output::Options {}]
-    set out [dict get $machine output]
-    lmap key {decimals angle_decimals} {
-        set n [dict get $defaults -[string map {_ -} $key]]
-        if {[dict exists $out $key] && [::fivax::num::int [dict get $out $key]] ne ""} {
-            set n [::fivax::num::int [dict get $out $key]]
-        }
-        expr {10.0 ** -$n}
     }
 }

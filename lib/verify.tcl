@@ -1,22 +1,94 @@
 # verify.tcl --
-#	Checks written NC blocks against the CL data they stand for: reads the
-#	axis words back from the block text (so output rounding counts), runs
-#	the forward kinematics (never the inverse) and measures the tip and axis
-#	deviation at each CL point and, for cutting moves, at the quarter points
-#	of the controller's linear joint interpolation against the straight CL
-#	segment and the great circle of the tool axis (spec section 7), and
-#	refuses a written value outside the machine's travel or rotary limits
-#	(machine checkLimits). It knows nothing of how the planner chose the
-#	blocks: it depends on kin and the machine dict only.
+#	Checks NC blocks by forward kinematics (never the inverse). A Checker
+#	reads the words of each block from the NC text (so output rounding
+#	counts), keeps the controller's modal state (axis values, G0/G1,
+#	G93/G94, F), counts rotary values outside the machine's limits, and
+#	measures the tool tip and axis: at a block end against a CL target,
+#	and at the quarter points of the controller's linear joint
+#	interpolation against a straight segment and the great circle of the
+#	tool axis (spec section 7). Two hosts share this code: the post checks
+#	each block it writes (method block, with the planner's CL target), and
+#	tools/verify.tcl checks whole NC files of any post (methods read, tip,
+#	deviation, interior); in the post's blocks a value outside the
+#	machine's travel or rotary limits is refused with the CL record's
+#	FILE:LINE (machine checkLimits). It knows nothing of how the planner
+#	chose the blocks: it depends on kin and the machine's limits only.
+#
+#	Dialects: the text of a block is turned into address words by the
+#	Dialects table below (comments, lines that are no blocks, the word
+#	pattern); what the words mean is the ISO meaning common to fanuc,
+#	sinumerik and linuxcnc (G0 G1 G2 G3 G93 G94, X Y Z, the machine's
+#	rotary letters, F), with the canned cycles (G73 G76 G81..G89 with
+#	G98/G99 and R: the tool goes to X Y, down to Z, and back to the
+#	initial level or the R plane; G80 or a motion code ends them) and G53
+#	(its axis words are machine coordinates: those axes are unknown until
+#	written again). Sinumerik's SUPA, TRAORI/TRAFOOF and CYCLE800 and
+#	Heidenhain Klartext lines (L, CC, C, TOOL CALL, FUNCTION TCPM, PLANE
+#	SPATIAL, M91) are first turned into those terms.
+#
+#	Three spaces a block's X Y Z can be in: joint (machine values: the
+#	tip by forward kinematics), TCP (G43.4, TRAORI, FUNCTION TCPM, or
+#	the machine's tcp_codes: X Y Z are the tip in the workpiece frame,
+#	the axis comes from the rotaries) and a tilted work plane (G68.2,
+#	CYCLE800, PLANE SPATIAL: X Y Z are plane coordinates, the tool axis
+#	is the plane's Z; see lib/plane.tcl). A block's pose {P t} is the
+#	tip and axis in the workpiece frame in each.
 
 namespace eval ::fivax::verify {
-    namespace export create
+    namespace export create dialects
     namespace ensemble create -prefixes 0
     namespace upvar ::fivax::num pi pi
     variable Options {
         {-table-offset {maybe vec3} {} "X Y Z"
             "workpiece-frame position of the table reference point (default: the machine's table_offset)"}
+        {-controller {maybe word} {} NAME
+            "dialect of the NC text (default: the machine's controller; a dialect without an entry below is read as fanuc)"}
     }
+
+    # How the words of a block are found, per dialect:
+    #   comment  regexp of comment text, removed before reading words; the
+    #            text of each (the first capture group) is returned
+    #   skip     regexp of whole lines that are not blocks (% and O1000)
+    #   word     regexp of one address word, matched with -all -inline
+    #            (one flat pattern: capture groups cost 30 times more)
+    #   syntax   gcode (ISO words), sinumerik (ISO words and the keywords
+    #            SUPA, TRAORI, TRAFOOF, ORIWKS, ORIAXES, CYCLE800, read by
+    #            Sinumerik) or klartext (each line translated into ISO
+    #            words by Klartext first)
+    variable Dialects {
+        fanuc {
+            comment {\(([^)]*)\)}
+            skip {^\s*(%|O\d+\s*(\(.*\))?\s*)$}
+            word {[A-Z][-+.0-9]+}
+            syntax gcode
+        }
+        linuxcnc {
+            comment {\(([^)]*)\)|;(.*)$}
+            skip {^\s*%\s*$}
+            word {[A-Z][-+.0-9]+}
+            syntax gcode
+        }
+        sinumerik {
+            comment {;(.*)$}
+            skip {^\s*$}
+            word {[A-Z][-+.0-9]+}
+            syntax sinumerik
+        }
+        heidenhain {
+            comment {;(.*)$}
+            skip {^\s*$}
+            word {[A-Z][-+.0-9]+}
+            syntax klartext
+        }
+    }
+    # G codes whose meaning the checker follows; others are reported.
+    variable KnownG {0 1 2 3 4 17 18 19 20 21 40 43 43.4 49 53 53.1 54 55 56 57 58 59 68.2 69
+        70 71 73 76 80 81 82 83 84 85 86 87 88 89 90 93 94 98 99}
+    # Canned cycles.
+    variable CycleG {73 76 81 82 83 84 85 86 87 88 89}
+    # Letters understood besides X Y Z and the rotaries (and R, Q in a
+    # canned cycle).
+    variable KnownLetters {N G F S T M H O P D}
 }
 
 # ::fivax::verify::create --
@@ -27,21 +99,35 @@ proc ::fivax::verify::create {machine args} {
     Checker new $machine [::fivax::opts::parse $Options $args "verify create"]
 }
 
+# ::fivax::verify::dialects -- Returns the names of the dialects the checker reads.
+proc ::fivax::verify::dialects {} {
+    variable Dialects
+    dict keys $Dialects
+}
+
 oo::class create ::fivax::verify::Checker {
-    # S: machine, tableOffset, names, rollover, model, the modal
-    # axis values X Y Z q1 q2, prev (the last checked block) and the
+    # S: machine, tableOffset, dialect (its table entry), names, rollover,
+    # limits, model, the modal state X Y Z q1 q2 motion (0/1) mode
+    # (direct/inverse) F, prev (the last checked block) and the
     # statistics (see summary).
     variable S
 
     constructor {machine opts} {
         set S(machine) $machine
         set S(tableOffset) [dict get $opts -table-offset]
+        set name [dict get $opts -controller]
+        if {$name eq ""} {set name [dict get $machine controller]}
+        if {![dict exists $::fivax::verify::Dialects $name]} {set name fanuc}
+        set S(dialect) [dict get $::fivax::verify::Dialects $name]
         set chain [dict get $machine chain]
         set S(names) [lmap axis $chain {dict get $axis name}]
+        set S(tcpCodes) [dict get $machine tcp_codes]
         set S(rollover) [lmap axis $chain {dict get $axis rollover}]
-        array set S {X {} Y {} Z {} q1 {} q2 {} prev {} checked 0 segments 0
-            maxPos 0.0 maxAng 0.0 maxMidPos 0.0 maxMidAng 0.0 limitViolations 0
-            worst {} worstMid {}}
+        set S(limits) [lmap name $S(names) {dict get $machine limits $name}]
+        array set S {X {} Y {} Z {} q1 {} q2 {} motion {} mode direct F {} prev {}
+            cycle 0 return 98 initial {} bottom {} R {} tcp 0 frame {} plane 17 cc {}
+            checked 0 segments 0 maxPos 0.0 maxAng 0.0 maxMidPos 0.0 maxMidAng 0.0
+            limitViolations 0 worst {} worstMid {}}
         my setTool [dict get $machine tool_length]
     }
 
@@ -51,72 +137,456 @@ oo::class create ::fivax::verify::Checker {
         set S(prev) {}
     }
 
-    # Reads the axis words of the NC line, updates the modal machine
-    # state, and when move (a motion move record) carries a CL target
-    # (P, t) measures the deviation. A written value outside the travel or
-    # the rotary limits is counted and raises {FIVAX MACHINE LIMIT} with
-    # the move's FILE:LINE.
-    method block {line move} {
-        namespace upvar ::fivax::num pi pi
-        set text [regsub -all {\([^)]*\)} $line ""]
-        set written {}
-        # (a flat pattern: nested groups with -all -inline cost 30 times more)
-        foreach word [regexp -all -inline {[A-Z][-+.0-9]+} $text] {
-            set letter [string index $word 0]
+    # Returns the kin model in use.
+    method model {} {
+        return $S(model)
+    }
+
+    # Reads one NC line and updates the modal state. Returns a dict:
+    #   block    1 when the line is a block (not %, O1000 or empty)
+    #   motion   0 (G0), 1 (G1), 2 or 3 (G2/G3 arcs) or "" (no motion
+    #            mode yet): modal
+    #   moved    the axis names written in this block (X Y Z and rotaries)
+    #   joints   {X Y Z q1 q2} (rotaries in radians, chain order) after
+    #            the block, or "" while an axis is unknown (in a work
+    #            plane the rotaries are the control's: always "")
+    #   pose     {P t}: the tip and unit tool axis in the workpiece frame
+    #            after the block, or "" while unknown
+    #   space    joint, tcp or plane: what X Y Z are (see the file header)
+    #   arc      for an arc block, {start centre plane dir} in the space's
+    #            coordinates (dir 2 clockwise, 3 counter-clockwise about
+    #            the normal of plane 17, 18 or 19); else ""
+    #   mode     direct (G94) or inverse (G93): modal
+    #   F        the F word of this block ("" if none); feed: modal F
+    #   words    the words of the block, {letter value} pairs
+    #   comments the comment texts
+    #   limit    the rotary names whose written value is outside limits
+    #   unknown  {kind word} pairs: words the checker does not follow
+    #            (kind: "letter E", "G2", "text")
+    #   hole     1 when the block drills a hole of a canned cycle: joints
+    #            are then at the hole's bottom, and the modal Z afterwards
+    #            is the level the cycle returns to
+    method read {line} {
+        set text $line
+        switch -exact -- [dict get $S(dialect) syntax] {
+            klartext {set text [my Klartext $text]}
+            sinumerik {set text [my Sinumerik $text]}
+        }
+        set comments {}
+        set cre [dict get $S(dialect) comment]
+        if {[string first ( $text] >= 0 || [string first ";" $text] >= 0} {
+            foreach {- a b} [regexp -all -inline -- $cre $text] {
+                lappend comments [expr {$a ne "" ? $a : $b}]
+            }
+            regsub -all -- $cre $text "" text
+        }
+        set out [dict create block 0 motion $S(motion) moved {} joints {} pose {} \
+            space [my Space] arc {} mode $S(mode) F "" feed $S(F) words {} comments $comments \
+            limit {} unknown {} hole 0]
+        if {[string trim $text] eq "" || [regexp -- [dict get $S(dialect) skip] $line]} {
+            dict set out joints [my Joints]
+            dict set out pose [my Pose]
+            return $out
+        }
+        dict set out block 1
+        set words [regexp -all -inline -- [dict get $S(dialect) word] $text]
+        set rest [string trim [regsub -all -- [dict get $S(dialect) word] $text ""]]
+        set unknown {}
+        if {$rest ne ""} {lappend unknown text $rest}
+        set pairs {}
+        set moved {}
+        set limit {}
+        # G codes first: they decide what the axis words mean
+        set machineFrame 0
+        set planeSet 0
+        set dwell 0
+        foreach word $words {
+            if {[string index $word 0] ne "G"} continue
             set value [string range $word 1 end]
             if {![string is double -strict $value]} continue
-            if {$letter in {X Y Z}} {
-                set S($letter) $value
-                lappend written $letter $value
-            } elseif {[set i [lsearch -exact $S(names) $letter]] >= 0} {
-                set q [::fivax::num::rad $value]
-                lappend written $letter $q
-                set S(q[expr {$i + 1}]) $q
+            set g [expr {$value == round($value) ? int($value) : $value}]
+            if {$g in $::fivax::verify::CycleG} {
+                if {!$S(cycle)} {
+                    set S(initial) $S(Z)
+                    set S(bottom) $S(Z)
+                }
+                set S(cycle) 1
+            } elseif {$g in {98 99}} {
+                set S(return) $g
+            } elseif {$g in {0 1 2 3 80}} {
+                set S(cycle) 0
+            } elseif {$g == 53} {
+                set machineFrame 1
+            } elseif {$g == 68.2} {
+                set planeSet 1
+            } elseif {$g == 4} {
+                set dwell 1
             }
         }
-        if {[llength [::fivax::machine::outside $S(machine) $written]]} {
-            incr S(limitViolations)
-            set where [dict get $move src]
-            if {$where eq ""} {set where "NC block '$line'"}
-            ::fivax::machine::checkLimits $S(machine) $written $where
+        if {$planeSet} {
+            return [my PlaneWords $out $words]
         }
+        set hole 0
+        set start [list $S(X) $S(Y) $S(Z)]
+        set ijk {I 0.0 J 0.0 K 0.0}
+        foreach word $words {
+            set letter [string index $word 0]
+            set value [string range $word 1 end]
+            if {![string is double -strict $value]} {
+                lappend unknown text $word
+                continue
+            }
+            lappend pairs $letter $value
+            if {$letter in {X Y Z}} {
+                if {$machineFrame} {
+                    set S($letter) ""
+                } elseif {$S(cycle) && $letter eq "Z"} {
+                    # in a canned cycle Z is the hole's bottom
+                    set S(bottom) $value
+                } else {
+                    set S($letter) $value
+                }
+                if {$S(cycle)} {set hole 1}
+                lappend moved $letter
+            } elseif {$letter eq "R" && $S(cycle)} {
+                set S(R) $value
+                set hole 1
+            } elseif {$letter eq "Q" && $S(cycle)} {
+                # the peck depth: the hole ends at its bottom all the same
+            } elseif {$letter in {I J K} && $S(motion) in {2 3}} {
+                dict set ijk $letter $value
+            } elseif {[set i [lsearch -exact $S(names) $letter]] >= 0} {
+                set q [::fivax::num::rad $value]
+                lassign [lindex $S(limits) $i] min max
+                if {$q < $min - 1e-9 || $q > $max + 1e-9} {
+                    incr S(limitViolations)
+                    lappend limit $letter
+                }
+                set S(q[expr {$i + 1}]) $q
+                lappend moved $letter
+            } elseif {$letter eq "G"} {
+                set g [expr {$value == round($value) ? int($value) : $value}]
+                switch -exact -- $g {
+                    0 {set S(motion) 0}
+                    1 {set S(motion) 1}
+                    2 - 3 {set S(motion) $g}
+                    17 - 18 - 19 {set S(plane) $g}
+                    43.4 {set S(tcp) 1}
+                    49 {set S(tcp) 0}
+                    69 {set S(frame) {}}
+                    93 {set S(mode) inverse}
+                    94 {set S(mode) direct}
+                    default {
+                        if {$g ni $::fivax::verify::KnownG} {lappend unknown G$g $word}
+                    }
+                }
+            } elseif {$letter eq "F"} {
+                # (G4 F: a Sinumerik dwell time, no feed)
+                if {!$dwell} {
+                    set S(F) $value
+                    dict set out F $value
+                }
+            } elseif {$letter eq "M" && [llength $S(tcpCodes)]
+                    && [set k [lsearch -exact $S(tcpCodes) [expr {int($value)}]]] >= 0} {
+                set S(tcp) [expr {$k == 0}]
+            } elseif {$letter ni $::fivax::verify::KnownLetters} {
+                lappend unknown "letter $letter" $word
+            }
+        }
+        if {$S(motion) in {2 3} && [llength $moved]} {
+            # the centre from the start by I J K (incremental)
+            set centre [lmap c $start d [dict values $ijk] {
+                expr {$c eq "" ? "" : $c + $d}
+            }]
+            dict set out arc [list $start $centre $S(plane) $S(motion)]
+        }
+        dict set out motion $S(motion)
+        dict set out space [my Space]
+        dict set out mode $S(mode)
+        dict set out feed $S(F)
+        dict set out moved $moved
+        dict set out words $pairs
+        dict set out limit $limit
+        dict set out unknown $unknown
+        dict set out hole $hole
+        if {$hole} {
+            set z $S(Z)
+            set S(Z) $S(bottom)
+            dict set out joints [my Joints]
+            dict set out pose [my Pose]
+            # back to the initial level (G98) or the R plane (G99)
+            set S(Z) [expr {$S(return) == 99 ? $S(R) : $z}]
+        } else {
+            dict set out joints [my Joints]
+            dict set out pose [my Pose]
+        }
+        return $out
+    }
+
+    # Returns the space of X Y Z now: plane, tcp or joint.
+    method Space {} {
+        expr {$S(frame) ne "" ? "plane" : $S(tcp) ? "tcp" : "joint"}
+    }
+
+    # Reads a G68.2 block (words): the work plane's origin X Y Z and its
+    # Euler angles I J K (ZXZ); returns the read dict out as a block
+    # without motion. X Y Z are forgotten (the next ones are in the plane).
+    method PlaneWords {out words} {
+        set v {X 0.0 Y 0.0 Z 0.0 I 0.0 J 0.0 K 0.0}
+        foreach word $words {
+            set letter [string index $word 0]
+            set value [string range $word 1 end]
+            if {[dict exists $v $letter] && [string is double -strict $value]} {
+                dict set v $letter $value
+            }
+        }
+        my SetFrame zxz [list [dict get $v I] [dict get $v J] [dict get $v K]] \
+            [list [dict get $v X] [dict get $v Y] [dict get $v Z]]
+        dict set out space plane
+        dict set out joints ""
+        dict set out pose ""
+        return $out
+    }
+
+    # Sets the work plane of angles (deg) in convention at origin; the
+    # written X Y Z and the rotaries are forgotten (the control turns
+    # them).
+    method SetFrame {convention angles origin} {
+        set S(frame) [list [::fivax::plane::matrix $convention $angles] $origin]
+        foreach key {X Y Z q1 q2} {set S($key) ""}
+    }
+
+    # Returns the Klartext line as the ISO words the reader follows: L
+    # (FMAX: G0, F: G1, M91: G53, R0 left out), C with DR-/DR+ (G2/G3,
+    # the centre from the last CC as I J), TOOL CALL (T, S), FUNCTION
+    # TCPM (G43.4) and FUNCTION RESET TCPM (G49), STOP (M0); CC, PLANE
+    # SPATIAL and PLANE RESET set the state and give no block; BEGIN and
+    # END PGM and cycle 9 are no blocks; a comment "; text" stays one.
+    method Klartext {line} {
+        set body [string trim $line]
+        regexp {^\d+\s+(.*)$} $body -> body
+        set pl {[-+]?[0-9.]+}
+        if {[regexp {^;} $body] || [regexp {^(BEGIN|END) PGM\M} $body]
+                || [regexp {^CYCL DEF 9\.} $body]} {
+            return [expr {[string index $body 0] eq ";" ? $body : ""}]
+        }
+        if {[regexp {^L(\s.*)?$} $body -> rest]} {
+            set iso {}
+            foreach tok [regexp -all -inline {\S+} $rest] {
+                if {$tok eq "FMAX"} {
+                    set iso [linsert $iso 0 G0]
+                } elseif {$tok in {R0 RL RR}} {
+                } elseif {$tok eq "M91"} {
+                    set iso [linsert $iso 0 G0 G53]
+                } elseif {[regexp {^F[0-9.]+$} $tok]} {
+                    set iso [linsert $iso 0 G1]
+                    lappend iso $tok
+                } else {
+                    lappend iso $tok
+                }
+            }
+            return [join $iso]
+        }
+        if {[regexp "^CC\\s+(.*)$" $body -> rest]} {
+            foreach tok [regexp -all -inline {\S+} $rest] {
+                if {[regexp "^(\[XYZ\])($pl)$" $tok -> axis value]} {dict set S(cc) $axis $value}
+            }
+            return ""
+        }
+        if {[regexp {^C\s+(.*)$} $body -> rest]} {
+            set iso {}
+            foreach tok [regexp -all -inline {\S+} $rest] {
+                if {$tok in {DR- DR+}} {
+                    set iso [linsert $iso 0 G17 [expr {$tok eq "DR-" ? "G2" : "G3"}]]
+                } elseif {$tok ni {R0 RL RR}} {
+                    lappend iso $tok
+                }
+            }
+            foreach {axis letter} {X I Y J} {
+                if {[dict exists $S(cc) $axis] && $S($axis) ne ""} {
+                    lappend iso $letter[expr {[dict get $S(cc) $axis] - $S($axis)}]
+                }
+            }
+            return [join $iso]
+        }
+        if {[regexp {^TOOL CALL\s*(\d*)\s*[XYZ]?\s*(S\d+)?} $body -> tool speed]} {
+            return [string trim "[expr {$tool ne "" ? "T$tool" : ""}] $speed"]
+        }
+        if {[regexp {^FUNCTION TCPM\M} $body]} {return G43.4}
+        if {[regexp {^FUNCTION RESET TCPM\M} $body]} {return G49}
+        if {[regexp "^PLANE SPATIAL SPA($pl) SPB($pl) SPC($pl)" $body -> a b c]} {
+            my SetFrame spatial [list $a $b $c] {0.0 0.0 0.0}
+            return ""
+        }
+        if {[regexp {^PLANE RESET\M} $body]} {
+            set S(frame) {}
+            foreach key {q1 q2} {set S($key) ""}
+            return ""
+        }
+        if {$body eq "STOP"} {return M0}
+        return $body
+    }
+
+    # Returns the Sinumerik line with its keywords read: SUPA as G53,
+    # TRAORI / TRAFOOF switching TCP, ORIWKS / ORIAXES (the defaults the
+    # reader assumes) dropped, CYCLE800(..) setting the work plane (mode
+    # 57: rotations about X, Y', Z'') and CYCLE800() ending it.
+    method Sinumerik {line} {
+        set text $line
+        if {[string first ";" $text] >= 0} {
+            set comment [string range $text [string first ";" $text] end]
+            set text [string range $text 0 [string first ";" $text]-1]
+        } else {
+            set comment ""
+        }
+        regsub -all {\mSUPA\M} $text G53 text
+        if {[regsub -all {\mTRAORI\M} $text "" text]} {set S(tcp) 1}
+        if {[regsub -all {\mTRAFOOF\M} $text "" text]} {set S(tcp) 0}
+        regsub -all {\m(ORIWKS|ORIAXES)\M} $text "" text
+        if {[regexp {\mCYCLE800\(([^)]*)\)} $text -> args]} {
+            set v [split $args ,]
+            if {[string trim $args] eq ""} {
+                set S(frame) {}
+                foreach key {q1 q2} {set S($key) ""}
+            } elseif {[llength $v] >= 10 && [string trim [lindex $v 3]] eq "57"} {
+                my SetFrame xyz [lmap x [lrange $v 7 9] {string trim $x}] \
+                    [lmap x [lrange $v 4 6] {string trim $x}]
+            }
+            regsub {\mCYCLE800\([^)]*\)} $text "" text
+        }
+        return "$text$comment"
+    }
+
+    # Returns {P t}: the tip and axis in the workpiece frame of the point
+    # xyz of the current space with the current rotaries (the inside of an
+    # arc), or "" while they are unknown.
+    method poseAt {xyz} {
+        set saved [list $S(X) $S(Y) $S(Z)]
+        lassign $xyz S(X) S(Y) S(Z)
+        try {
+            return [my Pose]
+        } finally {
+            lassign $saved S(X) S(Y) S(Z)
+        }
+    }
+
+    # Returns {P t}: the tip and axis in the workpiece frame of the modal
+    # X Y Z and rotaries in the current space, or "" while unknown.
+    method Pose {} {
+        if {$S(X) eq "" || $S(Y) eq "" || $S(Z) eq ""} {return ""}
+        set xyz [list $S(X) $S(Y) $S(Z)]
+        if {$S(frame) ne ""} {
+            lassign $S(frame) R O
+            return [list [::fivax::plane::fromPlane $R $O $xyz] \
+                [lmap row $R {lindex $row 2}]]
+        }
+        if {$S(q1) eq "" || $S(q2) eq ""} {return ""}
+        if {$S(tcp)} {
+            set t [lindex [::fivax::kin::forward $S(model) [list 0.0 0.0 0.0 $S(q1) $S(q2)]] 1]
+            return [list $xyz $t]
+        }
+        ::fivax::kin::forward $S(model) [list {*}$xyz $S(q1) $S(q2)]
+    }
+
+    # Returns the modal joint vector {X Y Z q1 q2}, or "" while one is unknown.
+    # (in TCP mode the machine X Y Z that put the tip on the written X Y
+    # Z; in a work plane "": the rotaries are the control's).
+    method Joints {} {
+        if {$S(X) eq "" || $S(Y) eq "" || $S(Z) eq "" || $S(q1) eq "" || $S(q2) eq ""
+                || $S(frame) ne ""} {
+            return ""
+        }
+        if {$S(tcp)} {
+            set q [list $S(q1) $S(q2)]
+            return [concat [::fivax::kin::position $S(model) [list $S(X) $S(Y) $S(Z)] $q] $q]
+        }
+        list $S(X) $S(Y) $S(Z) $S(q1) $S(q2)
+    }
+
+    # Returns {P t}: tool tip and axis (workpiece frame) at joints.
+    method tip {joints} {
+        ::fivax::kin::forward $S(model) $joints
+    }
+
+    # Returns {dp da}: the distance (mm) and angle (deg) of the tool tip and
+    # axis at joints from tip P and unit axis t.
+    method deviation {joints P t} {
+        lassign [::fivax::kin::forward $S(model) $joints] Pm tm
+        list [::fivax::vec::norm [::fivax::vec::sub $Pm $P]] \
+            [::fivax::num::deg [::fivax::vec::angle $tm $t]]
+    }
+
+    # Returns {dp da}: the largest distance (mm) of the tool tip from the
+    # segment P0-P1 and angle (deg) of the axis from the great circle
+    # t0-t1 at the quarter points of the controller's linear joint
+    # interpolation from j0 to j1; a rotary that rolls over turns the
+    # shortest way.
+    method interior {j0 j1 P0 P1 t0 t1} {
+        namespace upvar ::fivax::num pi pi
+        foreach i {3 4} roll $S(rollover) {
+            if {$roll} {
+                set a [lindex $j0 $i]
+                set d [expr {[lindex $j1 $i] - $a}]
+                lset j1 $i [expr {$a + $d - 2.0 * $pi * round($d / (2.0 * $pi))}]
+            }
+        }
+        lassign [::fivax::kin::interpolationError $S(model) $j0 $j1 $P0 $P1 $t0 $t1] dp da
+        list $dp [::fivax::num::deg $da]
+    }
+
+    # Raises {FIVAX MACHINE LIMIT} with the move's FILE:LINE (machine
+    # checkLimits) when the block read as blk leaves the machine's X Y Z
+    # travel (its machine X Y Z, when known) or a rotary's limits.
+    method CheckLimits {blk line move} {
+        set values {}
+        set joints [dict get $blk joints]
+        if {$joints ne ""} {
+            foreach axis {X Y Z} v [lrange $joints 0 2] {dict set values $axis $v}
+        }
+        foreach axis [dict get $blk limit] {
+            dict set values $axis $S(q[expr {[lsearch -exact $S(names) $axis] + 1}])
+        }
+        if {![llength [::fivax::machine::outside $S(machine) $values]]} return
+        set where [dict get $move src]
+        if {$where eq ""} {set where "NC block '$line'"}
+        ::fivax::machine::checkLimits $S(machine) $values $where
+    }
+
+    # Reads the NC line (the post's own block) and, when move (a motion
+    # move record) carries a CL target (P, t), measures the deviation of
+    # the block's pose at its end and, for joint-space cutting moves (the
+    # control interpolates the joints linearly), inside the block. In TCP
+    # mode and in a work plane the control keeps the tip on the line (or
+    # arc) itself: the end is what is checked.
+    method block {line move} {
+        set blk [my read $line]
+        my CheckLimits $blk $line $move
         set P [dict get $move P]
-        if {$P eq "" || $S(X) eq "" || $S(Y) eq "" || $S(Z) eq "" || $S(q1) eq "" || $S(q2) eq ""} {
+        set pose [dict get $blk pose]
+        if {$P eq "" || $pose eq ""} {
             if {$P eq ""} {set S(prev) {}}
             return
         }
         set t [dict get $move t]
-        set joints [list $S(X) $S(Y) $S(Z) $S(q1) $S(q2)]
-        lassign [::fivax::kin::forward $S(model) $joints] Pm tm
+        lassign $pose Pm tm
         set dp [::fivax::vec::norm [::fivax::vec::sub $Pm $P]]
         set da [::fivax::num::deg [::fivax::vec::angle $tm $t]]
         incr S(checked)
         if {$dp > $S(maxPos)} {set S(maxPos) $dp; set S(worst) [dict get $move src]}
         if {$da > $S(maxAng)} {set S(maxAng) $da}
+        set joints [dict get $blk joints]
+        if {[dict get $blk space] ne "joint" || [dict get $blk arc] ne ""} {
+            set S(prev) {}
+            return
+        }
         if {[dict get $move kind] eq "feed" && $S(prev) ne ""} {
-            my Segment $S(prev) $joints $P $t [dict get $move src]
+            lassign $S(prev) j0 P0 t0
+            incr S(segments)
+            lassign [my interior $j0 $joints $P0 $P $t0 $t] dp da
+            if {$dp > $S(maxMidPos)} {set S(maxMidPos) $dp; set S(worstMid) [dict get $move src]}
+            if {$da > $S(maxMidAng)} {set S(maxMidAng) $da}
         }
         set S(prev) [list $joints $P $t]
-    }
-
-    # Measures the tip and axis at the quarter points of the linear joint
-    # interpolation from the previous checked block to joints; a rotary
-    # that rolls over turns the shortest way.
-    method Segment {prev joints P t src} {
-        namespace upvar ::fivax::num pi pi
-        lassign $prev j0 P0 t0
-        foreach i {3 4} roll $S(rollover) {
-            if {$roll} {
-                set a [lindex $j0 $i]
-                set d [expr {[lindex $joints $i] - $a}]
-                lset joints $i [expr {$a + $d - 2.0 * $pi * round($d / (2.0 * $pi))}]
-            }
-        }
-        incr S(segments)
-        lassign [::fivax::kin::interpolationError $S(model) $j0 $joints $P0 $P $t0 $t] dp da
-        set da [::fivax::num::deg $da]
-        if {$dp > $S(maxMidPos)} {set S(maxMidPos) $dp; set S(worstMid) $src}
-        if {$da > $S(maxMidAng)} {set S(maxMidAng) $da}
     }
 
     # Returns a dict: checked (CL points), segments, maxPos (mm), maxAng

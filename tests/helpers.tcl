@@ -70,9 +70,231 @@ proc corpusFile {name} {
 
 # runReplay --
 #	Runs tools/replay.tcl with args; returns {code output} (output:
-#	standard output and error together).
+#	standard output and error together). Every NC file a successful run
+#	writes (-o) is then checked by tools/verify.tcl against the CL file
+#	with the same machine, frame and tolerances (verifyReplayOutput): when
+#	that check fails, the code is 2 and verify's report ends the output,
+#	so that the test fails showing it.
 proc runReplay {args} {
     set code [catch {exec [info nameofexecutable] [file join $::fivaxRoot tools replay.tcl] \
         {*}$args 2>@1} out]
+    set out [regsub {\n?child process exited abnormally$} $out ""]
+    if {!$code} {
+        lassign [verifyReplayOutput $args] vcode vout
+        if {$vcode} {
+            set code 2
+            append out "\ntools/verify.tcl on the written file failed:\n$vout"
+        }
+    }
+    if {!$code} {
+        set opts [ReplayOptions $args]
+        if {[dict exists $opts -o] && [file isfile [dict get $opts -o]]} {
+            set problems [programProblems [dict get $opts -o] [dict get $opts -machine] \
+                [expr {[dict exists $opts -controller] ? [dict get $opts -controller] : ""}]]
+            if {[llength $problems]} {
+                set code 3
+                append out "\nprogram structure of the written file:\n[join $problems \n]"
+            }
+        }
+    }
+    list $code $out
+}
+
+# ReplayOptions --
+#	Returns the options of a replay command line argList as a dict
+#	(switches -msys -quiet -help with value 1; -machine defaulted).
+proc ReplayOptions {argList} {
+    set opts [dict create -machine [file join $::fivaxRoot machines hh-tilt45.tcl]]
+    for {set i 0} {$i < [llength $argList] - 1} {incr i} {
+        set w [lindex $argList $i]
+        if {$w in {-msys -quiet -help}} {
+            dict set opts $w 1
+        } else {
+            dict set opts $w [lindex $argList [incr i]]
+        }
+    }
+    return $opts
+}
+
+# programProblems --
+#	Reads the NC file path (for the machine file and controller, "": the
+#	machine's) and returns what breaks the safe program structure, one
+#	"LINE: what" each (at most 20), by the text alone:
+#	- the safety line (G40 G49 G80) and a work offset (G54..G59) before
+#	  the first motion; no sequence number twice; no text that is not
+#	  NC words or a comment;
+#	- every tool change (M6) right after a block taking Z up in machine
+#	  coordinates (G53 Z), and the program's first motion such a block;
+#	- the approach after it: rotaries alone, then X Y alone, then the
+#	  first Z move alone (with G43 after a tool change), before any cut
+#	  (whether the first cut is the post's entry down the tool axis or
+#	  the CL's own move the text cannot tell: program.test checks the
+#	  entry by forward kinematics);
+#	- the end: the last feed block followed by a rapid, not by the Z up,
+#	  and the last move of X, Y or Z up in machine coordinates.
+proc programProblems {path machineFile {controller ""}} {
+    set machine [fivax::machine load $machineFile]
+    set checker [fivax::verify create $machine -controller $controller]
+    set rotaries [fivax::machine rotaryNames $machine]
+    set problems {}
+    set seen {}
+    set header {}
+    set modal {}
+    # prevBlock: {G53? Z?} of the last block
+    set prevBlock {0 0}
+    # approach: 1 from a tool change (or the start) to its first Z move;
+    # stage: what moved last in it (none, rotary, xy)
+    set approach 1
+    set stage none
+    set toolChanged 0
+    set motions 0
+    set lastFeed 0
+    set afterFeed ""
+    set lastMotion ""
+    set n 0
+    try {
+        foreach line [split [viewFile $path] \n] {
+            incr n
+            set blk [$checker read $line]
+            if {![dict get $blk block]} continue
+            if {[regexp {^N(\d+)} $line -> num]} {
+                if {[dict exists $seen $num]} {
+                    lappend problems "$n: N$num again (line [dict get $seen $num])"
+                }
+                dict set seen $num $n
+            }
+            foreach {kind word} [dict get $blk unknown] {
+                if {$kind eq "text"} {lappend problems "$n: not NC words: $word"}
+            }
+            set words [dict get $blk words]
+            set codes {G {} M {}}
+            foreach {l v} $words {
+                if {$l in {G M}} {dict lappend codes $l [expr {$v + 0}]}
+            }
+            set gs [dict get $codes G]
+            set machineZ [expr {53 in $gs}]
+            if {!$motions} {lappend header {*}$gs}
+            if {6 in [dict get $codes M]} {
+                if {!([lindex $prevBlock 0] && [lindex $prevBlock 1])} {
+                    lappend problems "$n: tool change not right after Z up in machine coordinates"
+                }
+                set approach 1
+                set stage none
+                set toolChanged 1
+            }
+            # the axes whose value this block changes
+            set changed {}
+            set hasZ 0
+            foreach {l v} $words {
+                if {$l ni [concat {X Y Z} $rotaries]} continue
+                if {$l eq "Z"} {set hasZ 1}
+                if {$machineZ} {
+                    dict unset modal $l
+                } else {
+                    if {![dict exists $modal $l] || abs([dict get $modal $l] - $v) > 1e-9} {
+                        lappend changed $l
+                    }
+                    dict set modal $l $v
+                }
+            }
+            set prevBlock [list $machineZ $hasZ]
+            if {![llength [dict get $blk moved]]} continue
+            if {!$motions} {
+                foreach g {40 49 80} {
+                    if {$g ni $header} {lappend problems "$n: no G$g before the first motion"}
+                }
+                if {![llength [lmap g $header {if {$g >= 54 && $g <= 59} {set g} else continue}]]} {
+                    lappend problems "$n: no work offset (G54..G59) before the first motion"
+                }
+                if {!$machineZ} {lappend problems "$n: the first motion is not Z up in machine coordinates"}
+            }
+            incr motions
+            # (the rotaries may go home after the Z up)
+            if {$hasZ || "X" in $changed || "Y" in $changed} {set lastMotion [list $n $machineZ]}
+            if {$machineZ} {
+                if {$afterFeed eq ""} {set afterFeed machineZ}
+                continue
+            }
+            set cut [expr {[dict get $blk motion] == 1 || [dict get $blk hole]}]
+            set rot [llength [lmap a $changed {if {$a in $rotaries} {set a} else continue}]]
+            set xy [expr {"X" in $changed || "Y" in $changed}]
+            set z [expr {"Z" in $changed}]
+            if {$approach && !$cut} {
+                if {$z} {
+                    if {$xy || $rot} {lappend problems "$n: the approach's first Z move moves more than Z"}
+                    if {$toolChanged && 43 ni $gs} {lappend problems "$n: no G43 on the first Z move after the tool change"}
+                    set approach 0
+                    set toolChanged 0
+                } elseif {$rot && $xy} {
+                    lappend problems "$n: the approach turns rotaries and moves X Y in one block"
+                } elseif {$rot && $stage eq "xy"} {
+                    lappend problems "$n: the approach turns rotaries after moving X Y"
+                } elseif {$xy} {
+                    set stage xy
+                } elseif {$rot} {
+                    set stage rotary
+                }
+            } elseif {$approach && $cut} {
+                lappend problems "$n: a cut before the approach reached Z"
+                set approach 0
+            }
+            if {[dict get $blk motion] == 1} {
+                set lastFeed $n
+                set afterFeed ""
+            } elseif {$afterFeed eq ""} {
+                set afterFeed rapid
+            }
+        }
+    } finally {
+        $checker destroy
+    }
+    if {$lastFeed && $afterFeed ne "rapid"} {
+        lappend problems "$lastFeed: the last cut is not followed by a retract"
+    }
+    if {$motions && ![lindex $lastMotion 1]} {
+        lappend problems "[lindex $lastMotion 0]: the program does not end with Z up in machine coordinates"
+    }
+    lrange $problems 0 19
+}
+
+# verifyReplayOutput --
+#	Runs tools/verify.tcl on the NC file a replay with command line args
+#	wrote (-o), against its CL file (the last word), with the replay's
+#	-machine, -msys, -table-offset, -controller and -arc-tol; inside
+#	blocks with the replay's -tol and -atol plus 0.001 of output rounding
+#	(-tol 0: not linearised, -atol 0: axis not linearised; not checked). Returns {code output}; {0 {}}
+#	when nothing was written.
+proc verifyReplayOutput {argList} {
+    set opts [dict create -machine [file join $::fivaxRoot machines hh-tilt45.tcl]]
+    set switches {-msys -quiet -help}
+    set cl [lindex $argList end]
+    for {set i 0} {$i < [llength $argList] - 1} {incr i} {
+        set w [lindex $argList $i]
+        if {$w in $switches} {
+            dict set opts $w 1
+        } else {
+            dict set opts $w [lindex $argList [incr i]]
+        }
+    }
+    if {![dict exists $opts -o] || ![file isfile [dict get $opts -o]] || $cl eq "-"} {
+        return {0 {}}
+    }
+    set vargs [list -quiet -machine [dict get $opts -machine] -cl $cl]
+    if {[dict exists $opts -msys]} {lappend vargs -msys}
+    foreach key {-table-offset -controller -arc-tol} {
+        if {[dict exists $opts $key]} {lappend vargs $key [dict get $opts $key]}
+    }
+    # inside blocks: the replay's tolerances (0: not linearised) plus
+    # the output rounding of the block ends (as e2eSpec: 0.001 mm)
+    set tol [expr {[dict exists $opts -tol] ? [dict get $opts -tol] : 0.01}]
+    set atol [expr {[dict exists $opts -atol] ? [dict get $opts -atol] : 0.05}]
+    if {$tol == 0} {
+        # no linearisation at all
+        lappend vargs -mid-tol 1e9 -mid-atol 1e9
+    } else {
+        lappend vargs -mid-tol [expr {$tol + 0.001}] -mid-atol [expr {$atol == 0 ? 1e9 : $atol + 0.001}]
+    }
+    set code [catch {exec [info nameofexecutable] [file join $::fivaxRoot tools verify.tcl] \
+        {*}$vargs [dict get $opts -o] 2>@1} out]
     list $code [regsub {\n?child process exited abnormally$} $out ""]
 }

@@ -14,13 +14,15 @@
 #	Output. Without -o the program streams to standard output; with -o it
 #	goes to a temporary file beside the target, renamed into place at the
 #	end (a FIFO or character device named by -o is written directly, like
-#	standard output). Every block reaches its destination one output
+#	standard output), and the post's log (warnings, retracts, errors) to
+#	<target>.log beside it by the same rule (without -log; a FIFO or
+#	device target has no log). Every block reaches its destination one output
 #	buffer late: when a run fails (a written value outside the machine's
 #	limits is refused right after it was formatted) the held-back buffer
 #	is dropped, so the offending block is never written. The temporary
-#	file is removed on every exit path: errors and a broken pipe here, and
-#	signals (which pure Tcl cannot catch) by a guard process that removes
-#	it when this process ends in any way (see ::replay::Guard).
+#	files are removed on every exit path: errors and a broken pipe here,
+#	and signals (which pure Tcl cannot catch) by a guard process that
+#	removes them when this process ends in any way (see ::replay::Guard).
 #
 #	Progress. When standard error is a terminal (and without -quiet) a
 #	progress line there, at most twice a second: records, percent of the
@@ -51,7 +53,7 @@ proc ::replay::Reset {} {
     variable R
     array unset R
     array set R {
-        target "" tmp "" out "" sink "" guard "" held "" discard 0 broken 0
+        target "" tmp "" log "" out "" sink "" guard "" held "" discard 0 broken 0
         rt "" shown 0 start 0 last 0 size ""
     }
 }
@@ -110,18 +112,24 @@ proc ::replay::CheckInput {clsf} {
 }
 
 # ::replay::CheckMachine --
-#	Loads and checks the machine file of settings, its output settings and
-#	the settings that depend on it; returns the machine dict or dies.
+#	Loads and checks the machine file of settings, its output settings
+#	(with the post's .def, as the post makes its output layer) and the
+#	settings that depend on them; returns the machine dict or dies.
 proc ::replay::CheckMachine {settings} {
+    variable root
     set file [dict get $settings -machine]
     try {
         set machine [::fivax::machine load $file]
-        set options {}
-        if {[dict get $settings -controller] ne ""} {
-            lappend options -controller [dict get $settings -controller]
+        set options [list -def [::fivax::def load [file join $root post fivax.def]]]
+        foreach key {-controller -tcp} {
+            if {[dict get $settings $key] ne ""} {
+                lappend options $key [dict get $settings $key]
+            }
         }
-        [::fivax::output create $machine {*}$options] destroy
-        ::fivax::settings check $settings $machine replay
+        set out [::fivax::output create $machine {*}$options]
+        set resolution [$out resolution]
+        $out destroy
+        ::fivax::settings check $settings $machine $resolution replay
     } trap {FIVAX MACHINE NOFILE} {} {
         Die "$file: machine file not found"
     } trap {FIVAX} {msg} {
@@ -139,7 +147,7 @@ proc ::replay::Resolve {path} {
         set to [file readlink $path]
         set path [file normalize [file join [file dirname $path] $to]]
     }
-    Die "replay: -o $path: too many levels of symbolic links"
+    Die "replay: $path: too many levels of symbolic links"
 }
 
 # ::replay::SameFile -- Returns 1 when paths a and b name the same existing file.
@@ -149,13 +157,13 @@ proc ::replay::SameFile {a b} {
 }
 
 # ::replay::CheckTarget --
-#	Checks the -o path out against the inputs (clsf, machine file) and
-#	returns {direct path} or {file path}: the resolved target and how it
-#	is written (direct: a FIFO or character device, opened as it is;
-#	file: through a temporary file beside it). Dies with "replay: -o ...".
-proc ::replay::CheckTarget {out clsf machineFile} {
+#	Checks the path out of option (-o or -log) against the inputs (clsf,
+#	machine file) and returns {direct path} or {file path}: the resolved
+#	target and how it is written (direct: a FIFO or character device,
+#	opened as it is; file: a regular file). Dies with "replay: -o ...".
+proc ::replay::CheckTarget {option out clsf machineFile} {
     set path [Resolve [file normalize $out]]
-    set shown "replay: -o $out"
+    set shown "replay: $option $out"
     foreach {input what} [list $clsf "the CL file" $machineFile "the machine file"] {
         if {$input ne "-" && [SameFile $path $input]} {Die "$shown: is $what"}
     }
@@ -179,14 +187,15 @@ proc ::replay::CheckTarget {out clsf machineFile} {
 }
 
 # ::replay::Guard --
-#	Starts the guard of the temporary file tmp: a shell that ignores the
-#	usual signals and removes tmp once its standard input (a pipe from
-#	this process) closes, i.e. when this process ends, whatever ends it
-#	(exit, error, SIGINT, SIGTERM, SIGHUP, SIGKILL). After the rename the
-#	path is gone and the removal does nothing. Returns the pipe, or ""
-#	where no POSIX shell runs it (the error paths still remove tmp).
+#	Starts the guard of the temporary files tmp and tmp.log: a shell that
+#	ignores the usual signals and removes them once its standard input (a
+#	pipe from this process) closes, i.e. when this process ends, whatever
+#	ends it (exit, error, SIGINT, SIGTERM, SIGHUP, SIGKILL). After the
+#	renames the paths are gone and the removal does nothing. Returns the
+#	pipe, or "" where no POSIX shell runs it (the error paths still
+#	remove them).
 proc ::replay::Guard {tmp} {
-    set script {trap "" HUP INT QUIT PIPE TERM; cat >/dev/null; rm -f -- "$1"}
+    set script {trap "" HUP INT QUIT PIPE TERM; cat >/dev/null; rm -f -- "$1" "$1.log"}
     # In a session of its own (where setsid exists) signals sent to this
     # process group, even SIGKILL, do not reach it.
     set cmd [list sh -c $script fivax-guard $tmp]
@@ -199,8 +208,9 @@ proc ::replay::Guard {tmp} {
 
 # ::replay::OpenTarget --
 #	Opens the output: standard output (target ""), a direct target, or a
-#	temporary file beside a file target under a guard. Sets R(out).
-proc ::replay::OpenTarget {target} {
+#	temporary file beside a file target under a guard, whose log goes to
+#	log ("": none). Sets R(out).
+proc ::replay::OpenTarget {target log} {
     variable R
     if {$target eq ""} {
         set R(out) stdout
@@ -219,6 +229,7 @@ proc ::replay::OpenTarget {target} {
                 Die "replay: -o $path: cannot write: [string trim [lindex [split $chan :] end]]"
             }
             set R(tmp) $tmp
+            set R(log) $log
             set R(out) $chan
         }
     }
@@ -276,10 +287,25 @@ proc ::replay::Finish {} {
         set R(out) ""
     }
     if {$R(tmp) ne ""} {
+        if {$R(log) ne "" && [file exists $R(tmp).log]} {
+            file rename -force $R(tmp).log $R(log)
+        }
         file rename -force $R(tmp) $R(target)
         set R(tmp) ""
     }
     CloseGuard
+}
+
+# ::replay::LogFile --
+#	Returns <target>.log, the log file beside the file target path, or ""
+#	when that is the target itself; dies when it cannot be written.
+proc ::replay::LogFile {path} {
+    set log [file rootname $path].log
+    if {$log eq $path} {return ""}
+    if {[file exists $log] && ([file type $log] ne "file" || ![file writable $log])} {
+        Die "replay: -o $path: its log $log is not a writable file"
+    }
+    return $log
 }
 
 # ::replay::Cleanup --
@@ -298,7 +324,7 @@ proc ::replay::Cleanup {} {
         set R(out) ""
     }
     if {$R(tmp) ne ""} {
-        catch {file delete -force $R(tmp)}
+        catch {file delete -force $R(tmp) $R(tmp).log}
         set R(tmp) ""
     }
     CloseGuard
@@ -377,15 +403,22 @@ proc ::replay::Terminal {chan} {
 
 # ::replay::Post --
 #	Runs the post on clsf with the job settings, writing NC text to
-#	channel chan. Returns the runtime statistics merged with the post's
+#	channel chan; out is the output file as NX names it to the post (""
+#	for a stream). Returns the runtime statistics merged with the post's
 #	summary. An error that names no place gets the current CL record's
 #	FILE:LINE; one that is no fivax error is marked internal.
-proc ::replay::Post {settings clsf chan} {
+proc ::replay::Post {settings clsf chan out} {
     variable root
+    set globals [dict create fivax_settings $settings]
+    if {$out ne ""} {
+        dict set globals mom_output_file_full_name $out
+        dict set globals mom_output_file_directory [file dirname $out]
+        dict set globals mom_output_file_basename [file rootname [file tail $out]]
+        dict set globals mom_output_file_suffix [string trimleft [file extension $out] .]
+    }
     set rt [::fivax::mom create -post [file join $root post fivax.tcl] \
         -def [file join $root post fivax.def] -channel $chan \
-        -listing ::replay::Listing \
-        -globals [dict create fivax_settings $settings] \
+        -listing ::replay::Listing -globals $globals \
         -autopath [list [file join $root lib] [info library]]]
     try {
         set stats [$rt run $clsf]
@@ -425,6 +458,8 @@ proc ::replay::Summary {stats} {
     if {[info exists inserted]} {
         Say [format "fivax: %d points inserted, %d retracts, rotary travel %.3f deg; %d azimuth holds, %d singular swings, %d moves left out of tolerance" \
             $inserted $retracts $travel $holds $swings $unresolved]
+        Say [format "fivax: %d tool changes; %d dwell swings (rotaries turning %.3f deg with the tip in place); %d inverse-time feeds clamped at the machine's maximum (worst %.2f times slower than programmed)" \
+            $toolChanges $dwells $dwellTurn $clamps $slowdown]
     }
 }
 
@@ -446,7 +481,10 @@ proc ::replay::main {argv} {
     CheckMachine $settings
     set target ""
     if {[dict get $opts -o] ni {"" -}} {
-        set target [CheckTarget [dict get $opts -o] $clsf $machineFile]
+        set target [CheckTarget -o [dict get $opts -o] $clsf $machineFile]
+    }
+    if {[dict get $settings -log] ne ""} {
+        CheckTarget -log [dict get $settings -log] $clsf $machineFile
     }
     Say "fivax: posting for machine [file normalize $machineFile]"
     if {![dict get $opts -quiet] && [Terminal stderr]} {
@@ -455,12 +493,20 @@ proc ::replay::main {argv} {
     set R(start) [clock milliseconds]
     set R(last) $R(start)
     if {$clsf ne "-" && [file isfile $clsf]} {set R(size) [file size $clsf]}
-    OpenTarget $target
+    # the post's log beside a file target: a temporary name, kept only when
+    # the run succeeds
+    set log ""
+    if {[lindex $target 0] eq "file" && [dict get $settings -log] eq ""} {
+        set log [LogFile [lindex $target 1]]
+    }
+    OpenTarget $target $log
+    if {$log ne ""} {dict set settings -log $R(tmp).log}
+    set out [expr {[lindex $target 0] eq "file" ? [file normalize [dict get $opts -o]] : ""}]
     set R(sink) [chan create write ::replay::Sink]
     chan configure $R(sink) -translation lf -encoding utf-8 -buffering full \
         -buffersize $bufferSize
     try {
-        set stats [Post $settings $clsf $R(sink)]
+        set stats [Post $settings $clsf $R(sink) $out]
         if {[dict exists $stats limitViolations] && [dict get $stats limitViolations] > 0} {
             # A safety net: the checker refuses such a value when it is written.
             error "[dict get $stats limitViolations] values outside the machine's limits; no NC file written"

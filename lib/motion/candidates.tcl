@@ -107,17 +107,18 @@ proc ::fivax::motion::HoldTilt {ctx t r1 q2} {
 }
 
 # ::fivax::motion::BestTilt --
-#	Returns the tilt q1 (radians, (-pi, pi]) that brings the tool axis
-#	closest to unit t when the azimuth is q2 on kin model: with
-#	w = R(u2, -s2 q2) t, the angle th maximising (R(u1, th) Z).w is
-#	atan2((u1 x Z).w, (Z - k1 u1).w).
+#	Returns the tilt q1 (radians, (-pi, pi] plus the zero offset z1) that
+#	brings the tool axis closest to unit t when the azimuth is q2 on kin
+#	model: with w = R(u2, -s2 (q2 - z2)) t, the angle th maximising
+#	(R(u1, th) Z).w is atan2((u1 x Z).w, (Z - k1 u1).w); q1 = s1 th + z1.
 proc ::fivax::motion::BestTilt {model t q2} {
-    set w [::fivax::vec::rotate [dict get $model u2] [expr {-[dict get $model s2] * $q2}] $t]
+    set w [::fivax::vec::rotate [dict get $model u2] \
+        [expr {-[dict get $model s2] * ($q2 - [dict get $model z2])}] $t]
     lassign $w wx wy wz
     lassign [dict get $model u1] x1 y1 z1
     set zw [expr {$wz - $z1 * ($x1 * $wx + $y1 * $wy + $z1 * $wz)}]
     set mw [expr {$y1 * $wx - $x1 * $wy}]
-    expr {[dict get $model s1] * atan2($mw, $zw) + 0.0}
+    expr {[dict get $model s1] * atan2($mw, $zw) + [dict get $model z1]}
 }
 
 # ::fivax::motion::Aliases --

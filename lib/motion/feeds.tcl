@@ -2,7 +2,7 @@
 #	(motion) Feeds: the machine's feed clamp and the feed of each cutting
 #	move (spec/kinematics.md section 8). A move with rotary motion gets
 #	inverse time (F = feed / tip path length, 1/min, at most the machine's
-#	inverse_time_max), or with -feed dpm the combined feed of all axes
+#	inverse_time_max: counted, with the worst slowdown, when clamped), or with -feed dpm the combined feed of all axes
 #	(mm and degrees) that keeps the block's time; linear moves and -feed
 #	direct get the tip feed in mm/min.
 
@@ -26,7 +26,13 @@ oo::define ::fivax::motion::Planner {
             return [list direct $f $f $d]
         }
         if {$S(feed) eq "inverse"} {
-            return [list inverse $f [expr {$d * $S(itMax) > $f ? $f / $d : $S(itMax)}] $d]
+            if {$d * $S(itMax) > $f} {return [list inverse $f [expr {$f / $d}] $d]}
+            # clamped: the move runs slower than programmed
+            incr S(clamps)
+            if {$d > 0} {
+                set S(slowdown) [expr {max($S(slowdown), $f / $d / $S(itMax))}]
+            }
+            return [list inverse $f $S(itMax) $d]
         }
         if {$d <= 0} {return [list dpm $f $S(feedMax) $d]}
         set len [expr {sqrt(($X1 - $X0) ** 2 + ($Y1 - $Y0) ** 2 + ($Z1 - $Z0) ** 2

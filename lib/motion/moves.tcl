@@ -48,6 +48,9 @@ oo::define ::fivax::motion::Planner {
         }
         my Travel $moves
         set S(last) $b
+        set S(lastKind) $kind
+        set S(lastSrc) $src
+        set S(lastHole) ""
         incr S(moves) [llength $moves]
         return $moves
     }
@@ -55,11 +58,16 @@ oo::define ::fivax::motion::Planner {
     # Returns a move record (see flush) of the given kind to joints
     # {X Y Z q1 q2}, writing the axes in write (X Y Z, and R for both
     # rotaries); feed is {mode feed rate tip} or {} for rapids.
+    # X Y Z are those of the output frame (see Out); in a work plane no
+    # rotary is written.
     method Move {kind joints write P t feed src {tag ""} {note ""}} {
         lassign [lmap axis $S(axes) {dict get $axis name}] n1 n2
-        lassign $joints X Y Z q1 q2
+        lassign $joints - - - q1 q2
+        lassign [my Out $joints] X Y Z
         set i [lsearch -exact $write R]
-        if {$i >= 0} {set write [lreplace $write $i $i $n1 $n2]}
+        if {$i >= 0} {
+            set write [lreplace $write $i $i {*}[expr {$S(plane) eq "" ? [list $n1 $n2] : {}}]]
+        }
         if {![llength $feed]} {set feed {direct 0 0 0}}
         lassign $feed mode f rate tip
         dict create kind $kind axes [list X $X Y $Y Z $Z $n1 $q1 $n2 $q2] write $write \
@@ -68,14 +76,34 @@ oo::define ::fivax::motion::Planner {
 
     # Returns the moves to the very first point b (a point record): a
     # rapid rotates first, then moves X Y, then Z; a feed goes straight.
+    # A first feed point is approached from clearance above it along the
+    # tool axis (never a first move that feeds from an unknown position),
+    # the last clearance at the entry feed.
     method First {kind b feed src} {
-        lassign $b joints P t
         if {$kind eq "feed"} {
-            set f [my FeedClamp $feed]
-            return [list [my Move feed $joints {X Y Z R} $P $t [list direct $f $f 0.0] $src]]
+            set a [my Above $b]
+            return [concat [my First rapid $a 0.0 $src] [list [my Entry $b $feed $src]]]
         }
+        lassign $b joints P t
         list [my Move rapid $joints R {} {} {} $src] [my Move rapid $joints {X Y} {} {} {} $src] \
             [my Move rapid $joints {X Y Z R} $P $t {} $src]
+    }
+
+    # Returns the point record clearance above point record b along its
+    # actual tool axis, with b's rotaries.
+    method Above {b} {
+        lassign $b jb Pb tb actb lab
+        set Pe [::fivax::vec::add $Pb [::fivax::vec::scale $S(clearance) $actb]]
+        set je [concat [::fivax::kin::position $S(model) $Pe [lrange $jb 3 4]] [lrange $jb 3 4]]
+        list $je $Pe $tb $actb $lab
+    }
+
+    # Returns the feed move down to point record b at the entry feed: the
+    # machine's entry_feed, else half the cutting feed (mm/min).
+    method Entry {b feed src} {
+        set f [my FeedClamp [expr {$S(entryFeed) ne "" ? $S(entryFeed) : 0.5 * $feed}]]
+        lassign $b jb Pb tb
+        my Move feed $jb {X Y Z R} $Pb $tb [list direct $f $f $S(clearance)] $src reengage
     }
 
     # Returns the rapid moves from point record a to point record b. A
@@ -98,20 +126,14 @@ oo::define ::fivax::motion::Planner {
     # Returns the moves from point record a to point record b when no
     # cutting move can get there: retract along the tool axis by the
     # clearance, rapid to the new configuration above b (Transfer), and
-    # re-engage along b's tool axis at feed f (mm/min). reason goes into
-    # the note.
+    # re-engage along b's tool axis at the entry feed (f: the cutting
+    # feed, mm/min). reason goes into the note.
     method Retract {a b f src reason} {
         incr S(retracts)
-        lassign $a ja Pa ta acta
-        lassign $b jb Pb tb actb lab
-        set c $S(clearance)
-        set Pr [::fivax::vec::add $Pa [::fivax::vec::scale $c $acta]]
-        set jr [concat [::fivax::kin::position $S(model) $Pr [lrange $ja 3 4]] [lrange $ja 3 4]]
-        set Pe [::fivax::vec::add $Pb [::fivax::vec::scale $c $actb]]
-        set je [concat [::fivax::kin::position $S(model) $Pe [lrange $jb 3 4]] [lrange $jb 3 4]]
+        lassign [my Above $a] jr Pr - ta
         set moves [list [my Move retract $jr {X Y Z} $Pr $ta {} $src "" $reason]]
-        lappend moves {*}[my Transfer [list $jr $Pr $ta $acta] [list $je $Pe $tb $actb] $src]
-        lappend moves [my Move feed $jb {X Y Z R} $Pb $tb [list direct $f $f $c] $src reengage]
+        lappend moves {*}[my Transfer [my Above $a] [my Above $b] $src]
+        lappend moves [my Entry $b $f $src]
     }
 
     # Returns the cutting moves through the point records pts (the last
@@ -134,6 +156,7 @@ oo::define ::fivax::motion::Planner {
             } else {
                 lappend moves [my Move feed $joints {X Y Z R} $P $t [my FeedOf $prev $p $f] $src \
                     [expr {$i < $last ? "inserted" : ""}]]
+                my CountDwell $prev $p
             }
             set prev $p
             incr i
@@ -157,6 +180,19 @@ oo::define ::fivax::motion::Planner {
             }
             set p1 $q1
             set p2 $q2
+        }
+    }
+
+    # Counts a dwell swing: a cutting move from point record a to b that
+    # only turns the rotaries while the tip stays put (at the singular
+    # direction, where the path leaves the pole with another azimuth).
+    method CountDwell {a b} {
+        lassign [lindex $a 0] - - - a1 a2
+        lassign [lindex $b 0] - - - b1 b2
+        set turn [expr {abs($b1 - $a1) + abs($b2 - $a2)}]
+        if {$turn > 1e-9 && [::fivax::vec::norm [::fivax::vec::sub [lindex $b 1] [lindex $a 1]]] < 1e-9} {
+            incr S(dwells)
+            set S(dwellTurn) [expr {$S(dwellTurn) + $turn}]
         }
     }
 

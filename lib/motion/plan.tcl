@@ -11,6 +11,7 @@
 #	    linearise.tcl   splitting moves until the joint interpolation
 #	                    stays within tolerance
 #	    feeds.tcl       feed clamp and the feed of each cutting move
+#	    holes.tcl       drilling: canned cycle records or expanded moves
 #
 #	Choice. A cutting move may go from one candidate to the next when both
 #	lie on the same branch (or one is in the singular cone, where branches
@@ -69,6 +70,13 @@ namespace eval ::fivax::motion {
         {-weights {reals 2 gt 0} {1 1} "W1 W2" "travel weights of the tilt and azimuth axes"}
         {-window {int min 2 max 100000} 4000 N
             "CL points the optimiser holds at most (about 1.5 kB each)"}
+        {-tcp {maybe bool} {} "0|1"
+            "TCP mode: X Y Z are the tool tip, feeds the tip feed (G94), no linearisation: the control keeps the tip on the path (default: the machine's tcp)"}
+        {-arcs {enum native points} native MODE
+            "CL arcs: native (G2/G3, Klartext C, where the control has them in the output frame's plane) or points"}
+        {-workplane {enum auto off} auto MODE
+            "an operation with a fixed tool axis off Z: in a tilted work plane (auto, where the control has one) or as five-axis blocks (off)"}
+        {-output any {} DICT "what the output dialect writes (the output Writer's capabilities)"}
         {-angle-step {real min 0} 0 DEG
             "output resolution of the rotary words: rotaries are rounded to it before X Y Z are computed (0: exact)"}
     }
@@ -93,6 +101,14 @@ oo::class create ::fivax::motion::Planner {
         set S(name) [dict get $machine name]
         dict for {opt value} $opts {set S([string range $opt 1 end]) $value}
         if {$S(clearance) eq ""} {set S(clearance) [dict get $machine clearance]}
+        if {$S(tcp) eq ""} {set S(tcp) [dict get $machine tcp]}
+        set S(output) [dict merge {inverse 1 plane 0 arcPlanes {} helix 0} $S(output)]
+        if {$S(tcp)} {
+            # the control interpolates the tip: no linearisation, tip feed
+            set S(tol) 0.0
+            set S(atol) 0.0
+            set S(feed) direct
+        }
         foreach {key name} {feedMin feed_min feedMax feed_max itMax inverse_time_max
             safeZ safe_z} {
             set S($key) [dict get $machine $name]
@@ -114,18 +130,25 @@ oo::class create ::fivax::motion::Planner {
                 rollover [dict get $axis rollover] prefer [dict get $axis prefer] swing $ms]
         }
         set S(frame) {}
-        array set S {last "" buf {} pathStart 1 points 0 moves 0 travel 0.0
-            inserted 0 retracts 0 holds 0 swings 0 unresolved 0 forced 0}
+        array set S {last "" lastHole "" buf {} pathStart 1 points 0 moves 0 travel 0.0
+            inserted 0 retracts 0 holds 0 swings 0 unresolved 0 forced 0 dwells 0
+            dwellTurn 0.0 clamps 0 slowdown 0.0 lastKind "" lastSrc ""
+            held "" heldAxis "" plane "" planeSaved "" wp off}
+        set S(entryFeed) [dict get $machine entry_feed]
         my setTool [dict get $machine tool_length]
     }
 
     # Rebuilds the kinematic model for a tool of length len (mm). Call
     # flush first: points still held would be posted for the new tool.
     # Errors: {FIVAX MOTION STATE} while points are held.
+    # The tool then stands at the tool-change position: the next point is
+    # approached as a first point (rotaries, then X Y, then Z down).
     method setTool {len} {
         if {[llength $S(buf)]} {
             ::fivax::Fail MOTION STATE "setTool with [llength $S(buf)] CL points held: flush first"
         }
+        set S(last) ""
+        set S(lastHole) ""
         set model [::fivax::kin::model $S(machine) $len $S(table-offset)]
         set S(toolLength) $len
         set S(ctx) [::fivax::motion::Context $model $S(name) $S(axes) $S(cone) $S(angle-step)]
@@ -142,8 +165,9 @@ oo::class create ::fivax::motion::Planner {
     # machine's sign preference where that costs nothing. Returns the moves
     # still held (as flush).
     method startPath {} {
-        set moves [my flush]
+        set moves [my endPath]
         set S(pathStart) 1
+        my HoldPlane
         return $moves
     }
 
@@ -153,20 +177,18 @@ oo::class create ::fivax::motion::Planner {
     # optimiser's window fills (see flush).
     # Errors: {FIVAX MOTION UNREACHABLE}, {FIVAX MOTION LIMIT}.
     method add {kind P t feed src} {
+        lassign [my Route [list add $kind $P $t $feed $src] $t] done pre
+        if {$done} {return $pre}
         lassign [my ToWork $P $t] P t
-        set t [::fivax::vec::unit $t]
-        incr S(points)
-        if {$S(rotary) eq "greedy"} {
-            return [my Greedy $kind $P $t $feed $src]
-        }
-        my Step $kind $P $t $feed $src
-        if {[llength $S(buf)] < $S(window)} {return {}}
-        my Commit 0
+        concat $pre [my AddWork $kind $P [::fivax::vec::unit $t] $feed $src]
     }
 
     # Returns every move record still held. A move record is a dict:
-    #   kind   rapid (positioning), feed (cutting) or retract (away from
-    #          the part along the tool axis, at rapid)
+    #   kind   rapid (positioning), feed (cutting), retract (away from
+    #          the part along the tool axis, at rapid), dwell (seconds: the
+    #          time) or cycle (a canned cycle's hole: axes at the bottom,
+    #          with event, r and initial (machine Z of the R plane and of
+    #          the initial level), step (peck) and delay (s), see hole)
     #   axes   the joint values by axis name: X Y Z (mm) and the two
     #          rotaries (radians, the planner's continuous values)
     #   write  the axis names to write in this block
@@ -179,7 +201,13 @@ oo::class create ::fivax::motion::Planner {
     #          and approach points; empty for positioning moves)
     #   src    FILE:LINE of the CL record; tag "", inserted or reengage;
     #   note   the reason of a retract
+    # A held work-plane segment (see frames.tcl) is posted: in its plane
+    # when it cuts.
     method flush {} {
+        if {$S(wp) eq "hold"} {
+            if {[my HeldCuts]} {return [my StartPlane]}
+            return [my ReleaseHeld free]
+        }
         if {![llength $S(buf)]} {return {}}
         my Commit 1
     }
@@ -190,12 +218,35 @@ oo::class create ::fivax::motion::Planner {
     # (azimuth swings above -swing between close points), unresolved
     # (moves still out of tolerance after the deepest split), forced
     # (window commits before the merge).
+    # dwells (cutting moves that only turn the rotaries with the tip at
+    # rest) and dwellTurn (deg), clamps (inverse-time feeds clamped at the
+    # machine's inverse_time_max) and slowdown (the worst factor by which a
+    # clamped move runs slower than programmed).
     method stats {} {
-        set d [dict create travel [::fivax::num::deg $S(travel)]]
-        foreach key {points moves inserted retracts holds swings unresolved forced} {
+        set d [dict create travel [::fivax::num::deg $S(travel)] \
+            dwellTurn [::fivax::num::deg $S(dwellTurn)]]
+        foreach key {points moves inserted retracts holds swings unresolved forced dwells
+            clamps slowdown} {
             dict set d $key $S($key)
         }
         return $d
+    }
+
+    # Returns the moves that end the program: those still held, then a
+    # retract along the tool axis by the clearance when the last move cut.
+    # The position is unknown afterwards (the host sends the tool home).
+    method finish {} {
+        set moves [my flush]
+        if {$S(last) ne "" && $S(lastKind) eq "feed"} {
+            set up [my Above $S(last)]
+            lassign $up joints P - act
+            set move [my Move rapid $joints {X Y Z} $P $act {} $S(lastSrc)]
+            my Travel [list $move]
+            lappend moves $move
+        }
+        set S(last) ""
+        set S(lastHole) ""
+        return $moves
     }
 
     # Returns {P t} mapped through the MSYS frame when enabled.
@@ -348,10 +399,17 @@ oo::class create ::fivax::motion::Planner {
             set forced [expr {$m < $n / 2 - 1}]
         }
         set moves {}
+        set azimuths [my Departures $path $k]
+        set j 0
         foreach layer [lrange $S(buf) 0 [expr {$k - 1}]] i [lrange $path 0 [expr {$k - 1}]] {
             lassign $layer kind P t feed src states
-            lappend moves {*}[my Emit $kind $P $t $feed $src \
-                {*}[lrange $states [expr {5 * $i}] [expr {5 * $i + 2}]]]
+            lassign [lrange $states [expr {5 * $i}] [expr {5 * $i + 2}]] q1 q2 lab
+            if {[dict exists $azimuths $j]} {
+                set q2 [dict get $azimuths $j]
+                set q1 [::fivax::motion::HoldTilt $S(ctx) $t $q1 $q2]
+            }
+            lappend moves {*}[my Emit $kind $P $t $feed $src $q1 $q2 $lab]
+            incr j
         }
         set S(buf) [lrange $S(buf) $k end]
         if {$forced} {
@@ -359,6 +417,48 @@ oo::class create ::fivax::motion::Planner {
             my Reroot
         }
         return $moves
+    }
+
+    # Returns the azimuths (layer index -> q2) that the approach sets:
+    # where a rapid reaches the singular cone (the azimuth free there) and
+    # the path then leaves the cone, the rapid and the cone points after it
+    # take the azimuth the path leaves with (Departure: its limit at the
+    # cone), so the azimuth turns during the approach and not with the tool
+    # at cutting depth. Only runs that end
+    # before layer k of the best path (the written prefix) and whose tilt
+    # stays within the limits at that azimuth.
+    method Departures {path k} {
+        set ctx $S(ctx)
+        set out [dict create]
+        set n [llength $path]
+        for {set j 0} {$j < $k} {incr j} {
+            lassign [lindex $S(buf) $j] kind - t
+            if {$kind ne "rapid" || ![::fivax::motion::InCone $ctx $t]} continue
+            set e $j
+            while {$e < $n && [::fivax::motion::InCone $ctx [lindex $S(buf) $e 2]]} {incr e}
+            if {$e >= $n} break
+            # the azimuth the path leaves the cone with (as Split sees it)
+            set q2 [::fivax::motion::Quantize $ctx [::fivax::motion::Departure $ctx \
+                [my PathRecord $path [expr {$e - 1}]] [my PathRecord $path $e] \
+                [lindex $S(buf) $e 4]]]
+            set ok 1
+            for {set i $j} {$i < $e} {incr i} {
+                set q1 [lindex $S(buf) $i 5 [expr {5 * [lindex $path $i]}]]
+                if {[::fivax::motion::HoldTilt $ctx [lindex $S(buf) $i 2] $q1 $q2] eq ""} {set ok 0}
+            }
+            if {$ok && $e < $k} {
+                for {set i $j} {$i < $e} {incr i} {dict set out $i $q2}
+            }
+            set j [expr {$e - 1}]
+        }
+        return $out
+    }
+
+    # Returns the point record (see Split) of held layer i on the path.
+    method PathRecord {path i} {
+        lassign [lindex $S(buf) $i] - P t - - states
+        lassign [lrange $states [expr {5 * [lindex $path $i]}] end] q1 q2 lab
+        list [list 0.0 0.0 0.0 $q1 $q2] $P $t {} $lab
     }
 
     # Recomputes the costs of the held layers from the last written point.

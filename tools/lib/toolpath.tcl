@@ -16,11 +16,21 @@
 #	  FRAME   n or tau not unit, or not orthogonal to each other
 #	  AXIS    a CL point whose tool axis is not a unit vector
 #	  EMPTY   clsf called with no points
+#	  DEGENERATE  a surface point whose normal vanishes (names u, v)
+#	  SURFACE     an unknown built-in surface name
+#
+#	Surfaces (define, at, frame, passes): a surface is a dict made by
+#	define from a built-in name (paper, plane, cylinder, sphere) or a
+#	user file of three expressions (tools/lib/surfexpr.tcl, sourced
+#	when needed); u and v run over [0, 1].
 
 namespace eval ::fivax::toolpath {
-    namespace export surface partials normal torusCL raster sweep clsf
+    namespace export surface partials normal torusCL raster sweep clsf goto
+    namespace export surfaces define at point frame passes
     namespace ensemble create -prefixes 0
     namespace upvar ::fivax::num pi Pi
+    # this file's directory (surfexpr.tcl is sourced from it when needed)
+    variable Home [file dirname [file normalize [info script]]]
 }
 
 # ::fivax::toolpath::surface --
@@ -243,6 +253,9 @@ proc ::fivax::toolpath::sweep {args} {
 #	  -D 16 -r 4 -length 75        TLDATA/MILL values
 #	  -rpm 8000 -feed 1000         SPINDL/RPM (clockwise), FEDRAT/MMPM
 #	  -clearance 50                approach and retract distance along t
+#	  -breaks {}                   indices of points that start a new pass:
+#	                               before each, a retract GOTO along the
+#	                               axis, RAPID, approach GOTO and FEDRAT
 #	Record order: TOOL PATH, TLDATA, MSYS (identity), $$ centerline data,
 #	LOAD/TOOL, SPINDL, COOLNT/ON, RAPID + GOTO approach, FEDRAT, one GOTO per
 #	point, retract GOTO, COOLNT/OFF, END-OF-PATH. Lengths have 4 decimals,
@@ -256,6 +269,7 @@ proc ::fivax::toolpath::clsf {points args} {
         {-r real 4 MM "corner radius"} {-length real 75 MM "tool length"}
         {-rpm real 8000 RPM "spindle speed"} {-feed real 1000 MMPM "feed"}
         {-clearance real 50 MM "approach distance"}
+        {-breaks any {} "I ..." "indices of the points that start a new pass (lift between passes)"}
     } $args clsf]
     dict with o {}
     CheckTool ${-D} ${-r}
@@ -288,21 +302,31 @@ proc ::fivax::toolpath::clsf {points args} {
         "RAPID"
     set lastAxis ""
     lassign [lindex $points 0] p t
-    lappend lines [Goto [::fivax::vec add $p [::fivax::vec scale ${-clearance} $t]] $t lastAxis]
+    lappend lines [goto [::fivax::vec add $p [::fivax::vec scale ${-clearance} $t]] $t lastAxis]
     lappend lines "FEDRAT/MMPM,[::fivax::num::fixed ${-feed} 4]"
+    set i 0
     foreach pt $points {
         lassign $pt p t
-        lappend lines [Goto $p $t lastAxis]
+        if {$i > 0 && $i in ${-breaks}} {
+            lappend lines [goto [::fivax::vec add $pp [::fivax::vec scale ${-clearance} $pt0]] \
+                               $pt0 lastAxis] RAPID \
+                [goto [::fivax::vec add $p [::fivax::vec scale ${-clearance} $t]] $t lastAxis] \
+                "FEDRAT/MMPM,[::fivax::num::fixed ${-feed} 4]"
+        }
+        lappend lines [goto $p $t lastAxis]
+        set pp $p
+        set pt0 $t
+        incr i
     }
-    lappend lines [Goto [::fivax::vec add $p [::fivax::vec scale ${-clearance} $t]] $t lastAxis] \
+    lappend lines [goto [::fivax::vec add $p [::fivax::vec scale ${-clearance} $t]] $t lastAxis] \
         "COOLNT/OFF" "END-OF-PATH"
     return $lines
 }
 
-# ::fivax::toolpath::Goto --
+# ::fivax::toolpath::goto --
 #	Returns the GOTO line for tip p and axis t; appends i,j,k only when their
 #	text differs from the variable named lastVar (updated).
-proc ::fivax::toolpath::Goto {p t lastVar} {
+proc ::fivax::toolpath::goto {p t lastVar} {
     upvar 1 $lastVar last
     lassign $p x y z
     lassign $t i j k
@@ -356,3 +380,188 @@ proc ::fivax::toolpath::CheckTool {D r} {
     }
 }
 
+
+# ::fivax::toolpath::surfaces -- Returns the names of the built-in surfaces.
+proc ::fivax::toolpath::surfaces {} {
+    return {paper plane cylinder sphere}
+}
+
+# ::fivax::toolpath::define --
+#	Returns the surface dict of spec: a built-in name (see surfaces) or
+#	the path of a user surface file. Built-ins over u, v in [0, 1], mm:
+#	  paper     the spec's S(u,v) (kinematics.md section 11)
+#	  plane     (100u - 50, 100v - 50, -28)
+#	  cylinder  x = 100u - 50, y = 100v - 50 on the cylinder of radius 60
+#	            about the X axis, top at z = 0: z = sqrt(3600 - y^2) - 60
+#	  sphere    x, y as above on the sphere of radius 100 about
+#	            (0, 0, -100): z = sqrt(10000 - x^2 - y^2) - 100
+#	Errors: {FIVAX TOOLPATH SURFACE}, and {FIVAX SURFACE ...} of a file.
+proc ::fivax::toolpath::define {spec} {
+    if {$spec in [surfaces]} {return [dict create kind $spec name $spec]}
+    if {![file exists $spec]} {
+        ::fivax::Fail TOOLPATH SURFACE "unknown surface '$spec': must be one of\
+            [join [surfaces] {, }] or a surface file"
+    }
+    if {[namespace which ::fivax::surfexpr::load] eq ""} {
+        source [file join $::fivax::toolpath::Home surfexpr.tcl]
+    }
+    dict merge [::fivax::surfexpr::load $spec] [dict create kind file name [file tail $spec]]
+}
+
+# ::fivax::toolpath::at --
+#	Returns {S Su Sv}: the point and partial derivatives of surface surf
+#	at (u, v): analytic for the built-ins, central differences (step
+#	1e-6) for a user file.
+proc ::fivax::toolpath::at {surf u v} {
+    switch -exact -- [dict get $surf kind] {
+        paper {
+            return [list [surface $u $v] {*}[partials $u $v]]
+        }
+        plane {
+            return [list [list [expr {100.0 * $u - 50.0}] [expr {100.0 * $v - 50.0}] -28.0] \
+                {100.0 0.0 0.0} {0.0 100.0 0.0}]
+        }
+        cylinder {
+            set y [expr {100.0 * $v - 50.0}]
+            set w [expr {sqrt(3600.0 - $y * $y)}]
+            return [list [list [expr {100.0 * $u - 50.0}] $y [expr {$w - 60.0}]] \
+                {100.0 0.0 0.0} [list 0.0 100.0 [expr {-100.0 * $y / $w}]]]
+        }
+        sphere {
+            set x [expr {100.0 * $u - 50.0}]
+            set y [expr {100.0 * $v - 50.0}]
+            set w [expr {sqrt(10000.0 - $x * $x - $y * $y)}]
+            return [list [list $x $y [expr {$w - 100.0}]] \
+                [list 100.0 0.0 [expr {-100.0 * $x / $w}]] [list 0.0 100.0 [expr {-100.0 * $y / $w}]]]
+        }
+        file {
+            set h 1e-6
+            set S [FilePoint $surf $u $v]
+            set Su [::fivax::vec scale [expr {0.5 / $h}] [::fivax::vec sub \
+                [FilePoint $surf [expr {$u + $h}] $v] [FilePoint $surf [expr {$u - $h}] $v]]]
+            set Sv [::fivax::vec scale [expr {0.5 / $h}] [::fivax::vec sub \
+                [FilePoint $surf $u [expr {$v + $h}]] [FilePoint $surf $u [expr {$v - $h}]]]]
+            return [list $S $Su $Sv]
+        }
+    }
+}
+
+# ::fivax::toolpath::point --
+#	Returns the point S(u, v) of surface surf (at without the partials:
+#	the gouge check's inner loop).
+proc ::fivax::toolpath::point {surf u v} {
+    switch -exact -- [dict get $surf kind] {
+        paper {
+            set p [expr {$u * (3.55 + $u * (-14.8 + $u * (21.1 - 9.9 * $u)))}]
+            return [list [expr {100.0 * $u - 50.0}] [expr {100.0 * $v - 50.0}] \
+                [expr {-80.0 * $v * ($v - 1.0) * $p - 28.0}]]
+        }
+        file {return [FilePoint $surf $u $v]}
+        default {return [lindex [at $surf $u $v] 0]}
+    }
+}
+
+# ::fivax::toolpath::FilePoint -- Returns the point of the user surface surf at (u, v).
+proc ::fivax::toolpath::FilePoint {surf u v} {
+    lmap c {x y z} {
+        ::fivax::surfexpr::value [dict get $surf $c] $u $v \
+            "[dict get $surf file]:[dict get $surf lines $c]: "
+    }
+}
+
+# ::fivax::toolpath::frame --
+#	Returns {S n Su Sv} at (u, v): the surface point, the unit normal
+#	unit(Su x Sv) and the partial derivatives. Errors: DEGENERATE where
+#	Su x Sv vanishes.
+proc ::fivax::toolpath::frame {surf u v} {
+    lassign [at $surf $u $v] S Su Sv
+    set c [::fivax::vec cross $Su $Sv]
+    set len [::fivax::vec norm $c]
+    if {!($len > 1e-9 * [::fivax::vec norm $Su] * [::fivax::vec norm $Sv])} {
+        ::fivax::Fail TOOLPATH DEGENERATE [format "surface %s: the normal vanishes at u = %.6g,\
+            v = %.6g (Su x Sv = 0): the surface is degenerate there" [dict get $surf name] $u $v]
+    }
+    list $S [::fivax::vec scale [expr {1.0 / $len}] $c] $Su $Sv
+}
+
+# ::fivax::toolpath::passes --
+#	Returns the passes of a parallel (zig-zag) tool path on surface surf
+#	for a toroidal cutter: a list of passes, each a list of CL points
+#	{P t} (tool tip, unit axis) cut with torusCL. Options (mm, degrees):
+#	  -D 6 -r 2            cutter diameter and corner radius
+#	  -lead 25 -tilt 5     lead and tilt angles
+#	  -stepover 1          distance between passes (arc length across)
+#	  -step 1              distance between CL points along a pass
+#	  -along u             feed along u (passes at constant v) or v
+#	Passes run forwards and backwards in turn; the first and the last
+#	lie on the edges of the parameter square. Errors: DEGENERATE,
+#	those of torusCL, {FIVAX OPTION ...}.
+proc ::fivax::toolpath::passes {surf args} {
+    set o [::fivax::opts::parse {
+        {-D {real gt 0} 6 MM "cutter diameter"} {-r {real min 0} 2 MM "corner radius"}
+        {-lead real 25 DEG "lead angle"} {-tilt real 5 DEG "tilt angle"}
+        {-stepover {real gt 0} 1 MM "distance between passes"}
+        {-step {real gt 0} 1 MM "distance between points"}
+        {-along {enum u v} u DIR "feed direction"}
+    } $args passes]
+    dict with o {}
+    CheckTool ${-D} ${-r}
+    set beta [::fivax::num::rad ${-lead}]
+    set theta [::fivax::num::rad ${-tilt}]
+    set feedU [expr {${-along} eq "u"}]
+    # pass positions: equal arc length across, along the middle iso-curve
+    set across [Stations $surf [expr {!$feedU}] 0.5 ${-stepover}]
+    set out {}
+    set k 0
+    foreach w $across {
+        set ss [Stations $surf $feedU $w ${-step}]
+        if {$k % 2} {set ss [lreverse $ss]}
+        set dir [expr {$k % 2 ? -1.0 : 1.0}]
+        set pass {}
+        foreach s $ss {
+            lassign [expr {$feedU ? [list $s $w] : [list $w $s]}] u v
+            lassign [frame $surf $u $v] S n Su Sv
+            set d [expr {$feedU ? $Su : $Sv}]
+            # the feed tangent, made exactly orthogonal to n
+            set d [::fivax::vec sub $d [::fivax::vec scale [::fivax::vec dot $d $n] $n]]
+            set tau [::fivax::vec scale $dir [::fivax::vec unit $d]]
+            lappend pass [torusCL $S $n $tau ${-D} ${-r} $beta $theta]
+        }
+        lappend out $pass
+        incr k
+    }
+    return $out
+}
+
+# ::fivax::toolpath::Stations --
+#	Returns the parameter values (0 to 1, both included) of points spaced
+#	equally by at most step (mm of arc length) along the iso-curve of surf where
+#	the other parameter is w: along u when alongU, else along v. The
+#	arc length is summed over 400 chords.
+proc ::fivax::toolpath::Stations {surf alongU w step} {
+    set n 400
+    set len {0.0}
+    set acc 0.0
+    set prev {}
+    for {set i 0} {$i <= $n} {incr i} {
+        set s [expr {double($i) / $n}]
+        set p [lindex [at $surf {*}[expr {$alongU ? [list $s $w] : [list $w $s]}]] 0]
+        if {$prev ne ""} {
+            set acc [expr {$acc + [::fivax::vec norm [::fivax::vec sub $p $prev]]}]
+            lappend len $acc
+        }
+        set prev $p
+    }
+    set count [expr {max(1, int(ceil($acc / $step - 1e-9)))}]
+    set out {}
+    set j 0
+    for {set k 0} {$k <= $count} {incr k} {
+        set target [expr {$acc * $k / $count}]
+        while {$j < $n - 1 && [lindex $len $j+1] < $target} {incr j}
+        set a [lindex $len $j]
+        set b [lindex $len $j+1]
+        set f [expr {$b > $a ? ($target - $a) / ($b - $a) : 0.0}]
+        lappend out [expr {min(1.0, ($j + $f) / $n)}]
+    }
+    return $out
+}

@@ -1,0 +1,293 @@
+# svgplot.tcl --
+#	A small SVG writer for the tools' plots: line charts (series against a
+#	common x, titled axes with units, ticks, legend, an optional
+#	horizontal limit line) and the XY / XZ / YZ projections of a tool path
+#	with tool-axis whiskers. Self-contained SVG 1.1: no scripts, no
+#	external fonts or style sheets, so any browser shows it offline.
+#	Every series is one <polyline class="series" data-name=.. data-count=..>
+#	(one point per value) so that a test can count what was drawn.
+#	Pure Tcl; numbers formatted with fivax::num.
+
+namespace eval ::fivax::svgplot {
+    namespace export chart projections write
+    namespace ensemble create -prefixes 0
+    # Series colours, in order.
+    variable Colours {#1f77b4 #d62728 #2ca02c #9467bd #ff7f0e #8c564b}
+}
+
+# ::fivax::svgplot::chart --
+#	Returns the SVG text of a line chart. Options:
+#	  -title T -xlabel T -ylabel T   texts (labels name their units)
+#	  -series {{name xs ys} ...}      each a list of x and of y values
+#	  -limit {value label}            a dashed horizontal line (or {})
+#	  -width 900 -height 420          pixels
+#	  -zero 1                         the y axis includes 0
+proc ::fivax::svgplot::chart {args} {
+    variable Colours
+    set o [::fivax::opts::parse {
+        {-title text "" T "title"} {-xlabel text "" T "x axis title"}
+        {-ylabel text "" T "y axis title"} {-series any {} LIST "series"}
+        {-limit any {} "VALUE LABEL" "horizontal limit line"}
+        {-width {int min 200} 900 PX "width"} {-height {int min 150} 420 PX "height"}
+        {-zero bool 1 "" "the y axis includes 0"}
+    } $args "svgplot chart"]
+    dict with o {}
+    set xs {}
+    set ys {}
+    foreach s ${-series} {
+        lassign $s - sx sy
+        lappend xs {*}$sx
+        lappend ys {*}$sy
+    }
+    if {[llength ${-limit}]} {lappend ys [lindex ${-limit} 0]}
+    if {${-zero}} {lappend ys 0.0}
+    set box [list 70 40 [expr {${-width} - 20}] [expr {${-height} - 60}]]
+    set fx [Scale [Range $xs] [lindex $box 0] [lindex $box 2]]
+    set fy [Scale [Range $ys] [lindex $box 3] [lindex $box 1]]
+    set body [Frame $box $fx $fy ${-xlabel} ${-ylabel}]
+    set i 0
+    set legend {}
+    foreach s ${-series} {
+        lassign $s name sx sy
+        set colour [lindex $Colours [expr {$i % [llength $Colours]}]]
+        append body [Polyline $name $colour [Map $fx $sx] [Map $fy $sy]]
+        lappend legend $name $colour solid
+        incr i
+    }
+    if {[llength ${-limit}]} {
+        lassign ${-limit} value label
+        set y [Fmt [Apply $fy $value]]
+        append body "<line class=\"limit\" x1=\"[lindex $box 0]\" y1=\"$y\" x2=\"[lindex $box 2]\"\
+            y2=\"$y\" stroke=\"#000\" stroke-dasharray=\"6,4\"/>\n"
+        lappend legend $label #000 dashed
+    }
+    append body [Legend $legend [expr {[lindex $box 2] - [LegendWidth $legend] - 8}] \
+        [expr {[lindex $box 1] + 8}]]
+    Document ${-width} ${-height} ${-title} $body
+}
+
+# ::fivax::svgplot::projections --
+#	Returns the SVG text of the XY, XZ and YZ projections of a tool path.
+#	Options: -title T, -points {P ...} (tips), -axes {t ...} (unit tool
+#	axes, one per point, or {}), -whisker MM (drawn length of an axis),
+#	-every N (a whisker every N points), -width, -height.
+proc ::fivax::svgplot::projections {args} {
+    variable Colours
+    set o [::fivax::opts::parse {
+        {-title text "" T "title"} {-points any {} LIST "tips"} {-axes any {} LIST "axes"}
+        {-whisker {real min 0} 10 MM "whisker length"} {-every {int min 1} 10 N "whisker step"}
+        {-width {int min 300} 1200 PX "width"} {-height {int min 150} 440 PX "height"}
+    } $args "svgplot projections"]
+    dict with o {}
+    set panelW [expr {(${-width} - 40) / 3.0}]
+    set body ""
+    set k 0
+    foreach {name a b} {XY 0 1 XZ 0 2 YZ 1 2} {
+        set x0 [expr {20 + $k * $panelW}]
+        set box [list [expr {$x0 + 55}] 62 [expr {$x0 + $panelW - 10}] [expr {${-height} - 60}]]
+        set us [lmap p ${-points} {lindex $p $a}]
+        set vs [lmap p ${-points} {lindex $p $b}]
+        set ws {}
+        set wt {}
+        set i 0
+        foreach p ${-points} t ${-axes} {
+            if {$t ne "" && $i % ${-every} == 0} {
+                set e [::fivax::vec::add $p [::fivax::vec::scale ${-whisker} $t]]
+                lappend ws [list [lindex $p $a] [lindex $p $b] [lindex $e $a] [lindex $e $b]]
+                lappend wt [lindex $e $a] [lindex $e $b]
+            }
+            incr i
+        }
+        set all [concat $us [lmap {u v} $wt {set u}]]
+        set allv [concat $vs [lmap {u v} $wt {set v}]]
+        lassign [Equal [Range $all] [Range $allv] $box] ru rv
+        set fx [Scale $ru [lindex $box 0] [lindex $box 2]]
+        set fy [Scale $rv [lindex $box 3] [lindex $box 1]]
+        set la [string index $name 0]
+        set lb [string index $name 1]
+        append body [Frame $box $fx $fy "$la (mm)" "$lb (mm)"]
+        append body "<text x=\"[Fmt [expr {([lindex $box 0] + [lindex $box 2]) / 2.0}]]\" y=\"56\"\
+            text-anchor=\"middle\" font-size=\"13\">$name</text>\n"
+        append body "<g class=\"whiskers\" data-name=\"axis $name\" data-count=\"[llength $ws]\"\
+            stroke=\"[lindex $Colours 1]\" stroke-width=\"0.6\">\n"
+        foreach w $ws {
+            lassign $w p1 q1 p2 q2
+            append body "<line x1=\"[Fmt [Apply $fx $p1]]\" y1=\"[Fmt [Apply $fy $q1]]\"\
+                x2=\"[Fmt [Apply $fx $p2]]\" y2=\"[Fmt [Apply $fy $q2]]\"/>\n"
+        }
+        append body "</g>\n"
+        append body [Polyline "tip $name" [lindex $Colours 0] [Map $fx $us] [Map $fy $vs]]
+        incr k
+    }
+    append body [Legend [list "tool tip path" [lindex $Colours 0] solid \
+        "tool axis (every ${-every}th point, [Fmt ${-whisker}] mm)" [lindex $Colours 1] solid] \
+        20 4]
+    Document ${-width} ${-height} ${-title} $body
+}
+
+# ::fivax::svgplot::write --
+#	Writes text to path through a temporary file beside it (renamed at
+#	the end, so a failed run leaves no file). Returns path.
+proc ::fivax::svgplot::write {path text} {
+    set tmp [file join [file dirname [file normalize $path]] .[file tail $path].[pid].tmp]
+    set chan [open $tmp w]
+    try {
+        chan configure $chan -translation lf -encoding utf-8
+        puts -nonewline $chan $text
+    } on error {msg opts} {
+        close $chan
+        file delete -force $tmp
+        return -options $opts $msg
+    }
+    close $chan
+    file rename -force $tmp $path
+    return $path
+}
+
+# ::fivax::svgplot::Document -- Returns the SVG document of body with a title.
+proc ::fivax::svgplot::Document {width height title body} {
+    set t [Esc $title]
+    return "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n<svg xmlns=\"http://www.w3.org/2000/svg\"\
+        version=\"1.1\" width=\"$width\" height=\"$height\" viewBox=\"0 0 $width $height\"\
+        font-family=\"sans-serif\">\n<title>$t</title>\n<rect width=\"100%\" height=\"100%\"\
+        fill=\"#fff\"/>\n<text x=\"[expr {$width / 2}]\" y=\"20\" text-anchor=\"middle\"\
+        font-size=\"15\" font-weight=\"bold\">$t</text>\n$body</svg>\n"
+}
+
+# ::fivax::svgplot::Range -- Returns {min max} of the numbers in values (never empty).
+proc ::fivax::svgplot::Range {values} {
+    if {![llength $values]} {return {0.0 1.0}}
+    set lo [expr {double([::tcl::mathfunc::min {*}$values])}]
+    set hi [expr {double([::tcl::mathfunc::max {*}$values])}]
+    if {$hi - $lo < 1e-12 * max(1.0, abs($hi))} {
+        set pad [expr {max(1e-6, abs($hi) * 0.05)}]
+        return [list [expr {$lo - $pad}] [expr {$hi + $pad}]]
+    }
+    list $lo $hi
+}
+
+# ::fivax::svgplot::Equal --
+#	Returns the ranges ru and rv widened so that one unit is as long on
+#	both axes of box (true shape in a projection).
+proc ::fivax::svgplot::Equal {ru rv box} {
+    lassign $box x0 y0 x1 y1
+    lassign $ru a b
+    lassign $rv c d
+    set k [expr {max(($b - $a) / ($x1 - $x0), ($d - $c) / ($y1 - $y0))}]
+    set mu [expr {($a + $b) / 2.0}]
+    set mv [expr {($c + $d) / 2.0}]
+    list [list [expr {$mu - $k * ($x1 - $x0) / 2.0}] [expr {$mu + $k * ($x1 - $x0) / 2.0}]] \
+        [list [expr {$mv - $k * ($y1 - $y0) / 2.0}] [expr {$mv + $k * ($y1 - $y0) / 2.0}]]
+}
+
+# ::fivax::svgplot::Scale -- Returns the map {lo hi p0 p1} of range onto pixels p0..p1.
+proc ::fivax::svgplot::Scale {range p0 p1} {
+    list {*}$range $p0 $p1
+}
+
+# ::fivax::svgplot::Apply -- Returns the pixel of value v under map f.
+proc ::fivax::svgplot::Apply {f v} {
+    lassign $f lo hi p0 p1
+    expr {$p0 + ($v - $lo) * double($p1 - $p0) / ($hi - $lo)}
+}
+
+# ::fivax::svgplot::Map -- Returns the pixels of the values under map f.
+proc ::fivax::svgplot::Map {f values} {
+    lassign $f lo hi p0 p1
+    set k [expr {($p1 - $p0) / double($hi - $lo)}]
+    lmap v $values {expr {$p0 + ($v - $lo) * $k}}
+}
+
+# ::fivax::svgplot::Fmt -- Returns x with two decimals.
+proc ::fivax::svgplot::Fmt {x} {
+    ::fivax::num::fixed $x 2
+}
+
+# ::fivax::svgplot::Esc -- Returns text escaped for XML.
+proc ::fivax::svgplot::Esc {text} {
+    string map {& &amp; < &lt; > &gt; \" &quot;} $text
+}
+
+# ::fivax::svgplot::Polyline -- Returns one series as a polyline of pixel lists px, py.
+proc ::fivax::svgplot::Polyline {name colour px py} {
+    set pts [join [lmap x $px y $py {string cat [Fmt $x] , [Fmt $y]}] " "]
+    return "<polyline class=\"series\" data-name=\"[Esc $name]\" data-count=\"[llength $px]\"\
+        fill=\"none\" stroke=\"$colour\" stroke-width=\"1.2\" points=\"$pts\"/>\n"
+}
+
+# ::fivax::svgplot::Ticks -- Returns about n round tick values covering {lo hi}.
+proc ::fivax::svgplot::Ticks {lo hi {n 6}} {
+    set span [expr {double($hi) - $lo}]
+    set raw [expr {$span / $n}]
+    set mag [expr {10.0 ** floor(log10($raw))}]
+    foreach m {1 2 5 10} {
+        set step [expr {$m * $mag}]
+        if {$step >= $raw} break
+    }
+    set out {}
+    for {set v [expr {ceil($lo / $step) * $step}]} {$v <= $hi + 1e-9 * $span} \
+        {set v [expr {$v + $step}]} {
+        lappend out [expr {abs($v) < 1e-12 * $step ? 0.0 : $v}]
+    }
+    list $out $step
+}
+
+# ::fivax::svgplot::Label -- Returns tick value v as short text for tick step.
+proc ::fivax::svgplot::Label {v step} {
+    set d [expr {$step >= 1 ? 0 : int(ceil(-log10($step) - 1e-9))}]
+    if {abs($v) >= 1e5 || ($v != 0 && abs($v) < 1e-4)} {return [format %.2g $v]}
+    ::fivax::num::fixed $v $d
+}
+
+# ::fivax::svgplot::Frame --
+#	Returns the plot frame of box {x0 y0 x1 y1}: border, ticks and grid
+#	of maps fx, fy, and the axis titles.
+proc ::fivax::svgplot::Frame {box fx fy xlabel ylabel} {
+    lassign $box x0 y0 x1 y1
+    set out "<rect x=\"$x0\" y=\"$y0\" width=\"[Fmt [expr {$x1 - $x0}]]\"\
+        height=\"[Fmt [expr {$y1 - $y0}]]\" fill=\"none\" stroke=\"#444\"/>\n<g font-size=\"11\">\n"
+    lassign [Ticks {*}[lrange $fx 0 1]] ticks step
+    foreach v $ticks {
+        set x [Fmt [Apply $fx $v]]
+        append out "<line x1=\"$x\" y1=\"$y0\" x2=\"$x\" y2=\"$y1\" stroke=\"#ddd\"/>"
+        append out "<text x=\"$x\" y=\"[expr {$y1 + 15}]\" text-anchor=\"middle\">[Label $v $step]</text>\n"
+    }
+    lassign [Ticks {*}[lrange $fy 0 1] 5] ticks step
+    foreach v $ticks {
+        set y [Fmt [Apply $fy $v]]
+        append out "<line x1=\"$x0\" y1=\"$y\" x2=\"$x1\" y2=\"$y\" stroke=\"#ddd\"/>"
+        append out "<text x=\"[expr {$x0 - 5}]\" y=\"$y\" text-anchor=\"end\"\
+            dominant-baseline=\"middle\">[Label $v $step]</text>\n"
+    }
+    set xm [Fmt [expr {($x0 + $x1) / 2.0}]]
+    set ym [Fmt [expr {($y0 + $y1) / 2.0}]]
+    append out "</g>\n<text class=\"xlabel\" x=\"$xm\" y=\"[expr {$y1 + 35}]\" text-anchor=\"middle\"\
+        font-size=\"12\">[Esc $xlabel]</text>\n"
+    append out "<text class=\"ylabel\" x=\"[expr {$x0 - 50}]\" y=\"$ym\" text-anchor=\"middle\"\
+        font-size=\"12\" transform=\"rotate(-90 [expr {$x0 - 50}] $ym)\">[Esc $ylabel]</text>\n"
+}
+
+# ::fivax::svgplot::Legend --
+#	Returns a legend box at x, y for the flat list of {name colour style}.
+proc ::fivax::svgplot::Legend {items x y} {
+    set n [expr {[llength $items] / 3}]
+    set w [LegendWidth $items]
+    set out "<g class=\"legend\" font-size=\"11\"><rect x=\"$x\" y=\"$y\" width=\"$w\"\
+        height=\"[expr {$n * 16 + 8}]\" fill=\"#fff\" fill-opacity=\"0.85\" stroke=\"#999\"/>\n"
+    set yy [expr {$y + 14}]
+    foreach {name colour style} $items {
+        set dash [expr {$style eq "dashed" ? " stroke-dasharray=\"6,4\"" : ""}]
+        append out "<line x1=\"[expr {$x + 6}]\" y1=\"[expr {$yy - 4}]\" x2=\"[expr {$x + 30}]\"\
+            y2=\"[expr {$yy - 4}]\" stroke=\"$colour\" stroke-width=\"2\"$dash/>"
+        append out "<text x=\"[expr {$x + 36}]\" y=\"$yy\">[Esc $name]</text>\n"
+        incr yy 16
+    }
+    append out "</g>\n"
+}
+
+# ::fivax::svgplot::LegendWidth -- Returns the pixel width of a legend of {name colour style} items.
+proc ::fivax::svgplot::LegendWidth {items} {
+    set n 0
+    foreach {name - -} $items {set n [expr {max($n, [string length $name])}]}
+    expr {46 + 6 * $n}
+}

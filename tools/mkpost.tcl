@@ -1,0 +1,105 @@
+# mkpost.tcl --
+#	Writes one NX post per shipped machine: post/<machine>.tcl, a small
+#	wrapper that sets the machine and sources the shared post/fivax.tcl,
+#	and post/<machine>.def, the shared .def of the machine's dialect with
+#	the machine's name. Prints the template_post.dat line of each.
+#
+#	tclsh tools/mkpost.tcl ?-check?
+#	-check writes nothing and exits 1 when a post file differs from what
+#	would be written (the test suite runs it).
+
+package require Tcl 8.6
+
+set root [file dirname [file dirname [file normalize [info script]]]]
+set auto_path [linsert $auto_path 0 [file join $root lib]]
+package require fivax 0.1
+
+namespace eval ::mkpost {
+    variable options {
+        {-check bool 0 "" "write nothing; exit 1 when a post file is out of date"}
+        {-help bool 0 "" "print this help"}
+    }
+}
+
+# ::mkpost::Wrapper -- Returns the text of the wrapper post for machine name.
+proc ::mkpost::Wrapper {name} {
+    set key [string toupper FIVAX_$name]
+    return [string map [list @NAME@ $name @KEY@ $key] {# @NAME@.tcl -- fivax post for the machine @NAME@ (machines/@NAME@.tcl).
+#	Written by tools/mkpost.tcl. Add settings to the list below (keys are
+#	the replay options with their dash, e.g. -tol 0.005 -on-limit error).
+#	NX template_post.dat line:
+#	@KEY@,${UGII_CAM_POST_DIR}fivax/post/@NAME@.tcl,${UGII_CAM_POST_DIR}fivax/post/@NAME@.def
+set fivax_post_here [file dirname [file normalize [info script]]]
+set fivax_settings [list -machine [file join $fivax_post_here .. machines @NAME@.tcl]]
+source [file join $fivax_post_here fivax.tcl]
+}]
+}
+
+# ::mkpost::Def -- Returns the .def text for machine name from the base .def text.
+proc ::mkpost::Def {name base} {
+    if {![regsub -line {^MACHINE\s+\S+$} $base "MACHINE $name" text]} {
+        error "the base .def has no MACHINE line"
+    }
+    return "# $name.def -- the .def of the fivax post for $name (written by tools/mkpost.tcl\n# from post/fivax.def: edit that file and run the tool again).\n$text"
+}
+
+# ::mkpost::Read -- Returns the contents of file path ("" when absent).
+proc ::mkpost::Read {path} {
+    if {![file exists $path]} {return ""}
+    set chan [open $path r]
+    try {
+        fconfigure $chan -translation lf -encoding utf-8
+        return [read $chan]
+    } finally {
+        close $chan
+    }
+}
+
+# ::mkpost::Write -- Writes text to path (LF line ends) through a temporary file.
+proc ::mkpost::Write {path text} {
+    set chan [open $path.tmp w]
+    try {
+        fconfigure $chan -translation lf -encoding utf-8
+        puts -nonewline $chan $text
+    } finally {
+        close $chan
+    }
+    file rename -force $path.tmp $path
+}
+
+# ::mkpost::main -- Writes (or checks) the post pair of every machine file.
+proc ::mkpost::main {argv} {
+    variable options
+    variable ::root
+    try {
+        lassign [::fivax::opts argv $options $argv mkpost] opts rest
+    } trap {FIVAX OPTION} {msg} {
+        puts stderr $msg
+        exit 1
+    }
+    if {[dict get $opts -help] || [llength $rest]} {
+        puts "usage: tclsh tools/mkpost.tcl ?-check?\n[::fivax::opts help $options]"
+        exit [expr {[llength $rest] > 0}]
+    }
+    set base [Read [file join $root post fivax.def]]
+    set stale {}
+    foreach file [lsort [glob -directory [file join $root machines] *.tcl]] {
+        set name [dict get [::fivax::machine load $file] name]
+        foreach {path text} [list [file join $root post $name.tcl] [Wrapper $name] \
+                [file join $root post $name.def] [Def $name $base]] {
+            if {[Read $path] eq $text} continue
+            if {[dict get $opts -check]} {
+                lappend stale [file tail $path]
+            } else {
+                Write $path $text
+            }
+        }
+        puts "[string toupper FIVAX_$name],\${UGII_CAM_POST_DIR}fivax/post/$name.tcl,\${UGII_CAM_POST_DIR}fivax/post/$name.def"
+    }
+    if {[llength $stale]} {
+        puts stderr "mkpost: out of date: [join $stale {, }] (run tclsh tools/mkpost.tcl)"
+        exit 1
+    }
+}
+
+::mkpost::main $argv

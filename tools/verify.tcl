@@ -1,0 +1,558 @@
+# verify.tcl --
+#	Checks an NC program on a virtual machine: reads every block (fanuc or
+#	linuxcnc text, from fivax or another post), maps it back by forward
+#	kinematics (never the inverse) and reports per operation the tool tip
+#	and axis deviation at block ends (against the CL path with -cl) and
+#	inside joint-space moves (the controller's linear joint interpolation
+#	against the straight line between the block ends), rotary travel,
+#	retracts, rotary values outside the limits and feed anomalies, and
+#	names the worst NC line. Exits 1 when a figure exceeds the
+#	tolerances, a value is outside the limits or a feed is wrong.
+#
+#	tclsh tools/verify.tcl -machine M.tcl ?options? part.nc   (-help)
+
+package require Tcl 8.6
+
+set root [file dirname [file dirname [file normalize [info script]]]]
+set auto_path [linsert $auto_path 0 [file join $root lib]]
+package require fivax 0.1
+foreach f {toolpath.tcl clpath.tcl svgplot.tcl nctool.tcl} {
+    source [file join $root tools lib $f]
+}
+
+namespace eval ::verifytool {
+    # S: the state of one run (see Run)
+    variable S
+    variable Options {
+        {-machine text {} FILE "machine file (required)"}
+        {-cl text {} FILE "CLSF the program was posted from: block ends are compared with its CL path"}
+        {-msys bool 0 "" "map the CL data through the CLSF's MSYS frame (as replay -msys)"}
+        {-tol {real min 0} 0.01 MM "tip tolerance at block ends and inside blocks"}
+        {-atol {real min 0} 0.05 DEG "tool axis tolerance"}
+        {-mid-tol {maybe real min 0} {} MM "tip tolerance inside blocks (default: -tol)"}
+        {-mid-atol {maybe real min 0} {} DEG "tool axis tolerance inside blocks (default: -atol)"}
+        {-controller {maybe word} {} NAME "dialect of the NC text (default: the machine's controller)"}
+        {-tool-length {maybe real} {} MM "tool length (default: the CL's TLDATA, else the machine's tool_length)"}
+        {-table-offset {maybe vec3} {} "X Y Z" "workpiece-frame position of the table reference point"}
+        {-arc-tol {real gt 0} 0.002 MM "chord tolerance of CL arcs (the post's -arc-tol)"}
+        {-window {int min 1} 32 N "CL segments searched ahead of the last match"}
+        {-csv text {} FILE "write one row per block: line, op, motion, axes, back-plotted tip and axis, deviations"}
+        {-o text {} FILE "write the back-plotted tip path and tool axis as a CLSF"}
+        {-svg text {} PREFIX "write PREFIX-axes.svg, PREFIX-deviation.svg and PREFIX-path.svg"}
+        {-quiet bool 0 "" "print the verdict line only"}
+        {-help bool 0 "" "print this help"}
+    }
+}
+
+# ::verifytool::Say -- Prints msg on standard output unless quiet.
+proc ::verifytool::Say {opts msg} {
+    if {![dict get $opts -quiet]} {puts $msg}
+}
+
+# ::verifytool::ParseArgs -- Returns {opts ncPath} from argv.
+proc ::verifytool::ParseArgs {argv} {
+    variable Options
+    lassign [::fivax::nctool args $Options $argv verify \
+        "tclsh tools/verify.tcl -machine M.tcl ?options? part.nc" \
+        "Checks an NC program by forward kinematics." 1 -machine] opts rest
+    list $opts [lindex $rest 0]
+}
+
+# ::verifytool::NewOp -- Returns the statistics dict of a new operation name.
+proc ::verifytool::NewOp {name} {
+    dict create name $name blocks 0 feeds 0 moves 0 endPos 0.0 endPosAt {} endAng 0.0 \
+        endAngAt {} midPos 0.0 midPosAt {} midAng 0.0 midAngAt {} travel {0.0 0.0} \
+        retracts 0 limits 0 limitAt {} feedIssues 0 feedAt {}
+}
+
+# ::verifytool::Max --
+#	Raises figure key of the operation dict in opVar to value when larger,
+#	noting where.
+proc ::verifytool::Max {opVar key value where} {
+    upvar 1 $opVar op
+    if {$value > [dict get $op $key]} {
+        dict set op $key $value
+        dict set op ${key}At $where
+    }
+}
+
+# ::verifytool::Run --
+#	Checks the NC file path with the options on machine; returns {ops
+#	rows problems warnings names}: the operation statistics, one row per
+#	motion block (see Csv), the failed checks, the counts of words not
+#	understood by kind, and the rotary names (chain order).
+proc ::verifytool::Run {opts path machine} {
+    variable S
+    array unset S
+    array set S [list opts $opts path $path machine $machine ops {} op [NewOp program] \
+        opIndex -1 clPoints {} cursor 0 prev {} prevMotion "" rows {} warnings {} \
+        names [lmap a [dict get $machine chain] {dict get $a name}] \
+        rollover [lmap a [dict get $machine chain] {dict get $a rollover}] cl {}]
+    set S(checker) [::fivax::verify create $machine -table-offset [dict get $opts -table-offset] \
+        -controller [dict get $opts -controller]]
+    if {[dict get $opts -cl] ne ""} {
+        set S(cl) [::fivax::clpath read [dict get $opts -cl] [dict get $opts -msys] \
+            [dict get $opts -arc-tol] [dict get $machine units]]
+    }
+    $S(checker) setTool [dict get $opts -tool-length]
+    set lineNo 0
+    set chan [::fivax::nctool open $path]
+    try {
+        while {[gets $chan line] >= 0} {
+            incr lineNo
+            Line $line $path:$lineNo $lineNo
+        }
+    } finally {
+        close $chan
+        $S(checker) destroy
+    }
+    if {[dict get $S(op) blocks] || $S(opIndex) >= 0} {lappend S(ops) $S(op)}
+    if {![llength $S(rows)]} {NoRows}
+    if {[llength $S(cl)] && [llength $S(cl)] != $S(opIndex) + 1} {
+        puts stderr "verify: warning: [llength $S(cl)] CL operations, [expr {$S(opIndex) + 1}] in the NC file"
+    }
+    list $S(ops) $S(rows) [Problems] $S(warnings) $S(names)
+}
+
+# ::verifytool::Line -- Checks one NC line (at where, line number n).
+proc ::verifytool::Line {line where n} {
+    variable S
+    set blk [$S(checker) read $line]
+    foreach c [dict get $blk comments] {
+        if {[regexp {^\s*OPERATION\s+(.*?)\s*$} $c -> name]} {StartOp $name}
+    }
+    if {![dict get $blk block]} return
+    dict incr S(op) blocks
+    foreach {kind word} [dict get $blk unknown] {
+        if {![dict exists $S(warnings) $kind]} {
+            puts stderr "verify: $where: warning: $kind not understood ($word); read as if absent"
+        }
+        dict incr S(warnings) $kind
+    }
+    foreach axis [dict get $blk limit] {
+        dict incr S(op) limits
+        if {[dict get $S(op) limitAt] eq ""} {dict set S(op) limitAt "$where ($axis)"}
+    }
+    set pose [dict get $blk pose]
+    if {$pose eq "" || ![llength [dict get $blk moved]]} {
+        if {[llength [dict get $blk moved]]} {set S(prev) {}}
+        return
+    }
+    set joints [dict get $blk joints]
+    lassign $pose P t
+    dict incr S(op) moves
+    Travel $joints
+    set motion [dict get $blk motion]
+    if {$motion == 0 && $S(prevMotion) in {1 2 3}} {dict incr S(op) retracts}
+    set figures {{} {} {} {}}
+    if {[dict get $blk hole]} {
+        # a canned cycle's hole, checked at its bottom; its motions are
+        # the controller's, and the tool ends on the return level
+        set S(prev) {}
+        set figures [Cutting $blk $joints $P $t $where Bottom]
+        set S(prevMotion) 0
+        lappend S(rows) [list $n [dict get $S(op) name] 1 $joints $P $t {*}$figures \
+            [dict get $blk F] [dict get $blk mode]]
+        return
+    }
+    if {$motion in {1 2 3}} {set figures [Cutting $blk $joints $P $t $where]}
+    lappend S(rows) [list $n [dict get $S(op) name] $motion $joints $P $t {*}$figures \
+        [dict get $blk F] [dict get $blk mode]]
+    set S(prev) [list $joints $P $t]
+    set S(prevMotion) $motion
+}
+
+# ::verifytool::StartOp --
+#	Starts operation name: its statistics, the matching CL operation (by
+#	order) and its tool length.
+proc ::verifytool::StartOp {name} {
+    variable S
+    if {[dict get $S(op) blocks] || $S(opIndex) >= 0} {lappend S(ops) $S(op)}
+    set S(op) [NewOp $name]
+    incr S(opIndex)
+    set S(prev) {}
+    set S(prevMotion) ""
+    set S(cursor) 0
+    set S(clPoints) {}
+    set len [dict get $S(opts) -tool-length]
+    if {$S(opIndex) < [llength $S(cl)]} {
+        set clop [lindex $S(cl) $S(opIndex)]
+        set S(clPoints) [dict get $clop points]
+        if {$len eq ""} {set len [dict get $clop length]}
+    }
+    $S(checker) setTool $len
+}
+
+# ::verifytool::Travel --
+#	Adds the rotary motion from the previous block to joints (a rotary
+#	that rolls over turns the shortest way).
+proc ::verifytool::Travel {joints} {
+    variable S
+    if {$S(prev) eq "" || $joints eq "" || [lindex $S(prev) 0] eq ""} return
+    set twoPi [expr {2.0 * acos(-1)}]
+    set tr {}
+    foreach i {3 4} roll $S(rollover) acc [dict get $S(op) travel] {
+        set d [expr {[lindex $joints $i] - [lindex $S(prev) 0 $i]}]
+        if {$roll} {set d [expr {$d - $twoPi * round($d / $twoPi)}]}
+        lappend tr [expr {$acc + abs($d)}]
+    }
+    dict set S(op) travel $tr
+}
+
+# ::verifytool::Cutting --
+#	Checks a cutting block (G1) ending at joints, tip P, axis t: its feed,
+#	the inside of the move, and the end against the CL path (by match:
+#	Match, or Bottom for a hole). Returns
+#	{endPos endAng midPos midAng} ("" where not measured).
+proc ::verifytool::Cutting {blk joints P t where {match Match}} {
+    variable S
+    dict incr S(op) feeds
+    set issue [FeedIssue $blk]
+    if {$issue ne ""} {
+        dict incr S(op) feedIssues
+        if {[dict get $S(op) feedAt] eq ""} {dict set S(op) feedAt "$where: $issue"}
+    }
+    set out {{} {} {} {}}
+    set inside {}
+    if {[dict get $blk arc] ne ""} {
+        set inside [ArcInside [dict get $blk arc] [dict get $blk words]]
+    } elseif {$S(prev) ne "" && [dict get $blk space] eq "joint" && $joints ne ""
+            && [lindex $S(prev) 0] ne ""} {
+        # joint mode: the control interpolates the joints linearly (in TCP
+        # mode and in a work plane it keeps the tip on the line itself)
+        lassign $S(prev) j0 P0 t0
+        set inside [$S(checker) interior $j0 $joints $P0 $P $t0 $t]
+    }
+    if {[llength $inside]} {
+        lassign $inside midPos midAng
+        Max S(op) midPos $midPos $where
+        Max S(op) midAng $midAng $where
+        lset out 2 $midPos
+        lset out 3 $midAng
+    }
+    if {[llength $S(clPoints)]} {
+        lassign [$match $P $t] endPos endAng
+        Max S(op) endPos $endPos $where
+        Max S(op) endAng $endAng $where
+        lset out 0 $endPos
+        lset out 1 $endAng
+    }
+    return $out
+}
+
+# ::verifytool::ArcInside --
+#	Returns {d a} for an arc block (arc: {start centre plane dir} in the
+#	block's space): the largest distance (mm) of its points within
+#	-arc-tol from the CL path and the angle (deg) of the axis from the
+#	CL axis there; {} without a CL path. The cursor stays.
+proc ::verifytool::ArcInside {arc words} {
+    variable S
+    if {![llength $S(clPoints)]} {return {}}
+    lassign $arc start centre plane dir
+    set normal [dict get {17 {0 0 1} 18 {0 1 0} 19 {1 0 0}} $plane]
+    set end [lmap c {X Y Z} s $start {
+        expr {[dict exists $words $c] ? [dict get $words $c] : $s}
+    }]
+    set worst {0.0 0.0}
+    foreach q [::fivax::curve::arc $start $end $centre $normal [expr {$dir == 3 ? 1 : -1}] 0 \
+            [dict get $S(opts) -arc-tol]] {
+        lassign [$S(checker) poseAt $q] P t
+        lassign [::fivax::clpath nearest $S(clPoints) $P $t $S(cursor) \
+            [dict get $S(opts) -window]] d - - - tq
+        if {$d > [dict get $S(opts) -tol]} {
+            lassign [::fivax::clpath nearest $S(clPoints) $P $t $S(cursor) -1] d - - - tq
+        }
+        set a [::fivax::num::deg [::fivax::vec::angle $t $tq]]
+        set worst [list [expr {max([lindex $worst 0], $d)}] [expr {max([lindex $worst 1], $a)}]]
+    }
+    return $worst
+}
+
+# ::verifytool::FeedIssue --
+#	Returns what is wrong with the feed of cutting block blk ("" if
+#	nothing): G93 without F, no F at all, F not positive, F above the
+#	machine's feed_max (G94) or inverse_time_max (G93).
+proc ::verifytool::FeedIssue {blk} {
+    variable S
+    set F [dict get $blk F]
+    set mode [dict get $blk mode]
+    if {$mode eq "inverse" && $F eq ""} {return "G93 block without F"}
+    set f [expr {$F ne "" ? $F : [dict get $blk feed]}]
+    if {$f eq ""} {return "feed move without any F"}
+    if {$f <= 0} {return "F $f is not positive"}
+    set invMax [dict get $S(machine) inverse_time_max]
+    set feedMax [dict get $S(machine) feed_max]
+    if {$mode eq "inverse" && $f > $invMax} {
+        return "inverse-time F $f above the machine's inverse_time_max $invMax"
+    }
+    if {$mode eq "direct" && $f > $feedMax} {
+        return "F $f mm/min above the machine's feed_max $feedMax"
+    }
+    return ""
+}
+
+# ::verifytool::Match --
+#	Returns {d a}: the distance (mm) of tip P from the CL path and the
+#	angle (deg) of axis t from the CL axis there, searching ahead of the
+#	last match (the whole operation when the window finds nothing within
+#	-tol); moves the cursor to the match.
+proc ::verifytool::Match {P t} {
+    variable S
+    lassign [::fivax::clpath nearest $S(clPoints) $P $t $S(cursor) \
+        [dict get $S(opts) -window]] d i s Q tq
+    if {$d > [dict get $S(opts) -tol]} {
+        set far [::fivax::clpath nearest $S(clPoints) $P $t $S(cursor) -1]
+        if {[lindex $far 0] < $d} {lassign $far d i s Q tq}
+    }
+    set S(cursor) $i
+    list $d [::fivax::num::deg [::fivax::vec::angle $t $tq]]
+}
+
+# ::verifytool::Bottom --
+#	Returns {d a} as Match does for the bottom P, t of a canned cycle's
+#	hole, measured to the nearest hole bottom of the CL path (a point
+#	reached by feed), never to a point between: a hole too short or too
+#	deep fails.
+proc ::verifytool::Bottom {P t} {
+    variable S
+    set n [llength $S(clPoints)]
+    set best {Inf 0}
+    foreach from [list $S(cursor) 0] to [list [expr {$S(cursor) + [dict get $S(opts) -window]}] $n] {
+        for {set i $from} {$i < min($to, $n)} {incr i} {
+            lassign [lindex $S(clPoints) $i] Q tq src rapid
+            if {$rapid} continue
+            set d [::fivax::vec::norm [::fivax::vec::sub $P $Q]]
+            if {$d < [lindex $best 0]} {set best [list $d $i]}
+        }
+        if {[lindex $best 0] <= [dict get $S(opts) -tol]} break
+    }
+    lassign $best d i
+    set S(cursor) $i
+    list $d [::fivax::num::deg [::fivax::vec::angle $t [lindex $S(clPoints) $i 1]]]
+}
+
+# ::verifytool::NoRows --
+#	Fails: no block gave every axis of the machine (naming the letters
+#	the file writes that the machine lacks).
+proc ::verifytool::NoRows {} {
+    variable S
+    set letters [lmap k [dict keys $S(warnings)] {
+        if {[string match "letter *" $k]} {string range $k 7 end} else continue
+    }]
+    ::fivax::Fail TOOL MACHINE "$S(path): no block gives all of X Y Z [join $S(names) { }] of\
+        machine [dict get $S(machine) name][expr {[llength $letters] ?
+            "; the file writes [join $letters {, }]: is it for another machine?" : ""}]"
+}
+
+# ::verifytool::Problems -- Returns the failed checks of the operations, one text each.
+proc ::verifytool::Problems {} {
+    variable S
+    set opts $S(opts)
+    set tol [dict get $opts -tol]
+    set atol [dict get $opts -atol]
+    set midTol [dict get $opts -mid-tol]
+    if {$midTol eq ""} {set midTol $tol}
+    set midAtol [dict get $opts -mid-atol]
+    if {$midAtol eq ""} {set midAtol $atol}
+    set problems {}
+    foreach op $S(ops) {
+        dict with op {}
+        foreach {key lim unit what} [list endPos $tol mm "tip off the CL path" \
+                endAng $atol deg "axis off the CL axis" midPos $midTol mm "tip inside a block" \
+                midAng $midAtol deg "axis inside a block"] {
+            if {[dict get $op $key] > $lim} {
+                lappend problems [format "%s: %s %.6f %s > %g at %s" $name $what \
+                    [dict get $op $key] $unit $lim [dict get $op ${key}At]]
+            }
+        }
+        if {$limits} {lappend problems "$name: $limits rotary values outside the limits, first at $limitAt"}
+        if {$feedIssues} {lappend problems "$name: $feedIssues feed anomalies, first at $feedAt"}
+    }
+    return $problems
+}
+
+# ::verifytool::Report -- Prints the per-operation figures and the worst line.
+proc ::verifytool::Report {opts ops names hasCl} {
+    set worst {}
+    set wv -1
+    foreach op $ops {
+        dict with op {}
+        if {!$moves} continue
+        set msg [format "verify: %s: %d blocks (%d feed)" $name $blocks $feeds]
+        if {$hasCl} {
+            append msg [format ", block ends vs CL: max %.6f mm at %s, %.6f deg" \
+                $endPos [Where $endPosAt] $endAng]
+        }
+        append msg [format "; inside blocks: max %.6f mm at %s, %.6f deg" $midPos \
+            [Where $midPosAt] $midAng]
+        append msg [format "; rotary travel %s %.3f deg, %s %.3f deg; %d retracts;\
+            %d values outside limits; %d feed anomalies" [lindex $names 0] \
+            [::fivax::num::deg [lindex $travel 0]] [lindex $names 1] \
+            [::fivax::num::deg [lindex $travel 1]] $retracts $limits $feedIssues]
+        Say $opts $msg
+        foreach {key at} {endPos endPosAt midPos midPosAt} {
+            if {[dict get $op $key] > $wv} {
+                set wv [dict get $op $key]
+                set worst [list [dict get $op $at] $key]
+            }
+        }
+    }
+    if {$worst ne "" && [lindex $worst 0] ne ""} {
+        Say $opts [format "verify: worst NC line %s (%s %.6f mm)" [lindex $worst 0] \
+            [expr {[lindex $worst 1] eq "endPos" ? "block end off the CL path" : "inside the block"}] $wv]
+    }
+}
+
+# ::verifytool::Where -- Returns where, or "-" when empty.
+proc ::verifytool::Where {where} {
+    expr {$where eq "" ? "-" : $where}
+}
+
+# ::verifytool::Csv -- Writes the rows as CSV to path.
+proc ::verifytool::Csv {path rows names} {
+    set out [list [join [list line op motion X Y Z {*}$names x y z i j k \
+        end_dpos end_dangle mid_dpos mid_dangle F mode] ,]]
+    foreach row $rows {
+        lassign $row line op motion joints P t ep ea mp ma F mode
+        lassign $joints X Y Z q1 q2
+        set vals [list $line [::fivax::nctool::csvField $op] $motion]
+        # (a work plane's rotaries are the control's: no joint values)
+        foreach v [list $X $Y $Z] {lappend vals [expr {$v eq "" ? "" : [::fivax::num::fixed $v 4]}]}
+        foreach q [list $q1 $q2] {
+            lappend vals [expr {$q eq "" ? "" : [::fivax::num::fixed [::fivax::num::deg $q] 4]}]
+        }
+        foreach v [concat $P] {lappend vals [::fivax::num::fixed $v 6]}
+        foreach v $t {lappend vals [::fivax::num::fixed $v 7]}
+        foreach v [list $ep $ea $mp $ma] {
+            lappend vals [expr {$v eq "" ? "" : [format %.6f $v]}]
+        }
+        lappend vals $F $mode
+        lappend out [join $vals ,]
+    }
+    ::fivax::nctool::writeLines $path $out
+}
+
+# ::verifytool::Clsf --
+#	Writes the back-plotted path as a CLSF to path: one operation per NC
+#	operation, RAPID before G0 points, FEDRAT when the tip feed changes.
+proc ::verifytool::Clsf {path rows tool} {
+    set lines {}
+    set op ""
+    set last ""
+    set lastFeed ""
+    set prevP {}
+    foreach row $rows {
+        lassign $row - name motion joints P t - - - - F mode
+        if {$name ne $op} {
+            if {$op ne ""} {lappend lines END-OF-PATH}
+            lappend lines "TOOL PATH/[regsub -all {[^A-Za-z0-9_.-]} $name _],TOOL,BACKPLOT" \
+                "TLDATA/MILL,0.0000,0.0000,[::fivax::num::fixed $tool 4],0.0000,0.0000"
+            set op $name
+            set last ""
+            set lastFeed ""
+        }
+        if {$motion == 0} {
+            lappend lines RAPID
+        } elseif {$F ne "" || $mode eq "inverse"} {
+            set f [expr {$F eq "" ? $lastFeed : $F}]
+            if {$mode eq "inverse" && $prevP ne "" && $F ne ""} {
+                set f [expr {$F * [::fivax::vec::norm [::fivax::vec::sub $P $prevP]]}]
+            }
+            if {$f ne "" && $f > 0 && [::fivax::num::fixed $f 4] ne $lastFeed} {
+                set lastFeed [::fivax::num::fixed $f 4]
+                lappend lines "FEDRAT/MMPM,$lastFeed"
+            }
+        }
+        lappend lines [::fivax::toolpath::goto $P $t last]
+        set prevP $P
+    }
+    if {$op ne ""} {lappend lines END-OF-PATH}
+    ::fivax::nctool::writeLines $path $lines
+}
+
+# ::verifytool::Plots -- Writes the three plots of the rows with names prefix-*.svg; returns the paths.
+proc ::verifytool::Plots {prefix rows names tol file} {
+    set n [llength $rows]
+    set idx {}
+    for {set i 0} {$i < $n} {incr i} {lappend idx $i}
+    set series {}
+    foreach k {3 4} name $names {
+        lappend series [list "$name (deg)" $idx [lmap r $rows {
+            ::fivax::num::deg [lindex $r 3 $k]}]]
+    }
+    set axes [::fivax::svgplot chart -title "Rotary axes of [file tail $file]" \
+        -xlabel "block (written motion blocks in file order)" -ylabel "axis value (deg)" \
+        -series $series -zero 0]
+    set dev {}
+    foreach {k label} {8 "tip inside blocks" 6 "tip at block ends vs CL"} {
+        set xs {}
+        set ys {}
+        set i 0
+        foreach r $rows {
+            if {[lindex $r $k] ne ""} {lappend xs $i; lappend ys [lindex $r $k]}
+            incr i
+        }
+        if {[llength $xs]} {lappend dev [list "$label (mm)" $xs $ys]}
+    }
+    set deviation [::fivax::svgplot chart -title "Tool tip deviation, [file tail $file]" \
+        -xlabel "block (written motion blocks in file order)" -ylabel "deviation (mm)" \
+        -series $dev -limit [list $tol "tolerance $tol mm"]]
+    set path [::fivax::svgplot projections -title "Back-plotted tool path, [file tail $file]" \
+        -points [lmap r $rows {lindex $r 4}] -axes [lmap r $rows {lindex $r 5}] \
+        -every [expr {max(1, $n / 150)}] -whisker 10]
+    set out {}
+    foreach {kind text} [list axes $axes deviation $deviation path $path] {
+        lappend out [::fivax::svgplot write $prefix-$kind.svg $text]
+    }
+    return $out
+}
+
+# ::verifytool::main -- Parses argv, checks the file, prints the report, exits.
+proc ::verifytool::main {argv} {
+    lassign [ParseArgs $argv] opts path
+    try {
+        set machine [::fivax::machine load [dict get $opts -machine]]
+        if {[dict get $opts -controller] ne "" &&
+                [dict get $opts -controller] ni [::fivax::verify dialects]} {
+            ::fivax::nctool die "verify: bad -controller \"[dict get $opts -controller]\": must be one of\
+                [join [::fivax::verify dialects] {, }]"
+        }
+        lassign [Run $opts $path $machine] ops rows problems warnings names
+    } trap {FIVAX} {msg} {
+        ::fivax::nctool die "verify: $msg"
+    } trap {POSIX} {msg} {
+        ::fivax::nctool die "verify: $msg"
+    }
+    Say $opts "verify: [file tail $path] on [dict get $machine name] ([dict get $opts -machine])"
+    Report $opts $ops $names [expr {[dict get $opts -cl] ne ""}]
+    dict for {kind n} $warnings {
+        Say $opts "verify: warning: $n words of kind '$kind' not understood"
+    }
+    set tool [expr {[dict get $opts -tool-length] ne "" ? [dict get $opts -tool-length] :
+        [dict get $machine tool_length]}]
+    try {
+        if {[dict get $opts -csv] ne ""} {
+            Csv [dict get $opts -csv] $rows $names
+            Say $opts "verify: wrote [dict get $opts -csv]"
+        }
+        if {[dict get $opts -o] ne ""} {
+            Clsf [dict get $opts -o] $rows $tool
+            Say $opts "verify: wrote [dict get $opts -o]"
+        }
+        if {[dict get $opts -svg] ne ""} {
+            foreach f [Plots [dict get $opts -svg] $rows $names [dict get $opts -tol] $path] {
+                Say $opts "verify: wrote $f"
+            }
+        }
+    } trap {POSIX} {msg} {
+        ::fivax::nctool die "verify: cannot write: $msg"
+    }
+    if {[llength $problems]} {
+        foreach p $problems {puts "verify: FAIL: $p"}
+        exit 1
+    }
+    puts [format "verify: PASS: %d blocks within %g mm and %g deg" [llength $rows] \
+        [dict get $opts -tol] [dict get $opts -atol]]
+}
+
+::verifytool::main $argv
