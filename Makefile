@@ -45,7 +45,7 @@ bench: deps
 
 # Mutated CL files, machine files and command lines through tools/replay.tcl
 # (FUZZ_CASES cases, default 10000; FUZZ_ARGS: e.g. -seed 2 -jobs 4 -keep DIR).
-# Fails on a new failure; known issues are reported and counted apart.
+# Fails when a case fails (the failures and the counts by class are printed).
 FUZZ_CASES ?= 10000
 fuzz: deps
 	$(TCLSH) tools/fuzz.tcl -cases $(FUZZ_CASES) $(FUZZ_ARGS)

@@ -34,12 +34,17 @@ namespace eval ::fivax::machine {
     }
     variable topRequired {name axes}
     variable axisKeys {side direction point sense min max continuous prefer rollover offset}
-    # Stand-in for an unlimited continuous axis (radians) or linear travel.
+    # Stand-in for an unlimited continuous axis (radians).
     variable unlimited 1e300
     # Largest magnitude of a length (file units), a rotary limit (deg) and a
     # feed: beyond them a value is a typing error, not a machine.
     variable maxLength 1e5
     variable maxAngle 1e6
+    # Widest range (deg) of a limited axis and of a continuous axis with
+    # limits: each turn in the range is a candidate for the planner at
+    # every CL point, so a wider range multiplies the work (ten turns
+    # already triple it).
+    variable maxSpan {limited 720 continuous 3600}
     variable maxFeed 1e7
     # Values within this of a limit (mm, rad) are inside it.
     variable limitSlack 1e-9
@@ -223,6 +228,22 @@ proc ::fivax::machine::Real {src key value {what ""}} {
     return $v
 }
 
+# ::fivax::machine::CheckSpan --
+#	Fails naming the axis (what) unless the limits min..max (radians) of
+#	a limited (continuous 0) or a continuous axis lie within maxSpan.
+proc ::fivax::machine::CheckSpan {src what continuous min max} {
+    variable maxSpan
+    set kind [expr {$continuous ? "continuous" : "limited"}]
+    set most [dict get $maxSpan $kind]
+    set span [::fivax::num::deg [expr {$max - $min}]]
+    if {$span <= $most + 1e-9} return
+    set hint [expr {$continuous
+        ? "leave out 'min' and 'max' for an unlimited axis"
+        : "a multi-turn axis is 'continuous 1'"}]
+    ::fivax::Fail MACHINE VALUE "$src: ${what}'min'..'max' spans [format %g $span] deg:\
+        a $kind axis spans at most $most deg ($hint)"
+}
+
 # ::fivax::machine::Length --
 #	Returns value as a finite double of magnitude at most maxLength, or
 #	fails naming key.
@@ -255,14 +276,15 @@ proc ::fivax::machine::Vector {src key value {what ""}} {
 # ::fivax::machine::Travel --
 #	Returns the linear travel {X {min max} Y {min max} Z {min max}} of the
 #	'travel' value (any of X Y Z, each {min max} in file units); an axis
-#	not given is unlimited.
+#	not given travels -maxLength..maxLength, the largest length a machine
+#	file may hold.
 proc ::fivax::machine::Travel {src value} {
-    variable unlimited
+    variable maxLength
     if {![string is list $value] || [llength $value] % 2} {
         ::fivax::Fail MACHINE VALUE "$src: 'travel' is not a list of axis {min max} pairs: $value"
     }
-    set out [dict create X [list -$unlimited $unlimited] Y [list -$unlimited $unlimited] \
-        Z [list -$unlimited $unlimited]]
+    set out [dict create X [list -$maxLength $maxLength] Y [list -$maxLength $maxLength] \
+        Z [list -$maxLength $maxLength]]
     set seen {}
     foreach {axis range} $value {
         if {$axis ni {X Y Z}} {
@@ -390,6 +412,14 @@ proc ::fivax::machine::ParseAxes {src family axesText alpha yH} {
         }
         if {[dict get $lim min] > [dict get $lim max]} {
             ::fivax::Fail MACHINE VALUE "$src: ${what}'min' exceeds 'max': [dict get $p min] > [dict get $p max]"
+        }
+        if {[dict exists $p min] != [dict exists $p max]} {
+            set key [expr {[dict exists $p min] ? "max" : "min"}]
+            ::fivax::Fail MACHINE MISSING \
+                "$src: ${what}missing key '$key' (a continuous axis has both limits or none)"
+        }
+        if {[dict exists $p min]} {
+            CheckSpan $src $what $continuous [dict get $lim min] [dict get $lim max]
         }
         if {$family eq "headhead"} {
             foreach key {direction point} {

@@ -5,26 +5,23 @@
 #	a time limit, several at once) and checks how each run ends:
 #
 #	  posted   exit 0; every number in the NC text finite and inside the
-#	           machine's travel and rotary limits; one program (one header,
-#	           one end); no value a control refuses (F0, S0, negative S T H);
-#	           a DELAY written as G4; every inserted unknown record word
-#	           warned about; nothing but the NC file in the case directory
+#	           machine's travel and rotary limits; one program of the
+#	           controller's dialect (one header, one end); no value a
+#	           control refuses (F0, S0, negative S T H); a DELAY written as
+#	           a dwell; every inserted unknown record word warned about;
+#	           nothing but the NC file and its log in the case directory
 #	  refused  exit 1 and one line on stderr: "FILE:LINE: message" (CL
 #	           problems), "replay: ..." (command line, output) or
 #	           "MACHINEFILE: ..." (machine file); no output file, no file
 #	           left behind
 #	and never: a Tcl stack trace, an "internal error", a time-out, another
 #	exit status, an evaluated payload (a canary file that must not appear),
-#	NaN or Inf in the output, a partial or stray file.
+#	NaN or Inf in the output, a partial or stray file. Any such failure
+#	makes the exit status 1.
 #
-#	A failure that matches a known issue (the knownIssues table: findings
-#	in files this harness does not cover the fix of) is counted apart and
-#	reported with an example, so the run stays green and the finding
-#	visible; any other failure is new and makes the exit status 1.
-#
-#	tclsh tools/fuzz.tcl ?-cases 10000? ?-seed 1? ?-jobs 2? ?-timeout 20? ...
+#	tclsh tools/fuzz.tcl ?-cases 10000? ?-seed 1? ?-jobs 2? ?-timeout 10? ...
 #	(-help lists the options). The last line reads
-#	"fuzz: N cases ... new=F ..." (see Report).
+#	"fuzz: N cases ... failed=F" (see Report).
 
 package require Tcl 8.6
 
@@ -35,31 +32,12 @@ namespace eval ::fuzz {
         {-seed {int min 0 max 2147483647} 1 N "random seed: the same seed makes the same cases"}
         {-jobs {int min 1 max 64} 2 N "cases run at once"}
         {-timeout {real gt 0} 10 SEC "time limit of one case"}
-        {-known-timeout {real gt 0} 3 SEC "time limit of a case carrying a known trigger of unbounded work (issue 'hang')"}
         {-lines {int min 5 max 100000} 80 N "CL lines of an excerpt at most (plus its header)"}
         {-corpus text {} DIR "real CL files (default: FIVAX_CORPUS or ../shared/data/cl)"}
         {-dir text {} DIR "work directory (default: a new one under the system's temp directory); removed at the end"}
-        {-keep text {} DIR "copy the failing cases (every new one, up to 20 per known issue) into DIR"}
+        {-keep text {} DIR "copy the failing cases into DIR"}
         {-verbose bool 0 "" "print one line per case"}
         {-help bool 0 "" "print this help"}
-    }
-
-    # Known issues: findings in files this harness is not the place to fix,
-    # with the owner file. A failing case whose classes and inputs match an
-    # issue's matcher (::fuzz::Known_<id>) counts as that issue.
-    variable knownIssues {
-        dispatch {lib/mom.tcl (Unknown)}
-            {an unknown CL record word X fires the post's MOM_x when it exists (END_OF_PROGRAM writes M30 mid-file, START_OF_PROGRAM a second header, TOOL_CHANGE, SPINDLE_OFF, OUTPUT_TEXT, ABORT, FORCE, ...): dispatch an allow-list, warn about the rest}
-        dwell {lib/mom.tcl (Delay)}
-            {DELAY/n never writes G4: Delay tests [dict exists $rec revs], which always exists}
-        values {lib/output.tcl, lib/motion/feeds.tcl}
-            {values no control accepts are written: F0 / F0.000 (G93 with a tiny feed, FEDRAT/0), S0 for SPINDL/RPM,1e300, negative S, T, H}
-        internal {lib/motion/*, lib/curve.tcl, lib/kin.tcl, lib/vec.tcl}
-            {errors that name no cause on valid-looking data: domain error, integer value too large to represent, cannot normalise a zero vector (opposite tool axes), floating-point value too large}
-        unset {post/fivax.tcl, lib/mom.tcl}
-            {a handler reads a mom_* variable the CL data never set: SPINDL/ON (or SPINDL/CLW) without a speed before any speed makes MOM_spindle_rpm fail with can't read "mom_spindle_speed"}
-        hang {lib/motion/*, lib/curve.tcl}
-            {unbounded work: a huge coordinate (1e14 and beyond) after a tool-axis change, rotary limits of +-99999 or +-3600 deg, a huge CIRCLE}
     }
 
     # Words a CL record may carry that are post handlers or MOM commands
@@ -69,7 +47,7 @@ namespace eval ::fuzz {
         SPINDLE_RPM COOLANT_ON COOLANT_OFF END_OF_PATH START_OF_PATH
         LINEAR_MOVE RAPID_MOVE CIRCULAR_MOVE INITIAL_MOVE FIRST_MOVE GOHOME_MOVE
         OUTPUT_TEXT OUTPUT_LITERAL ABORT ABORT_EVENT FORCE SUPPRESS DO_TEMPLATE
-        SET_SEQ_OFF RESET_SEQUENCE MSYS PPRINT_ INSERT_ DELAY_ OPSTOP_
+        SET_SEQ_OFF RESET_SEQUENCE PPRINT_ INSERT_ DELAY_ OPSTOP_
     }
     variable plainWords {exit ::exit rename source eval subst uplevel interp after vwait
         EXIT/0 SOURCE/x RENAME/exit,x SET/MODE,X NURBS/1 FOO_BAR}
@@ -103,12 +81,15 @@ namespace eval ::fuzz {
         {-weights 1} {-cone -1} {-swing inf} {-controller x} {-feed x} {-rotary x}
         {-on-limit x} {-bogus} {-x 1} {--tol 1} {-TOL 1} {-machine} {-o}
         {-o .} {-o nodir/x.nc} {-o in.cls} {-o m.tcl} {-machine nowhere.tcl}
-        {-machine .} {-machine /dev/null}
+        {-machine .} {-machine /dev/null} {-log .} {-log nodir/x.log} {-log in.cls}
+        {-tcp x} {-insert x}
     }
     variable goodArgs {
         {-feed direct} {-feed dpm} {-rotary greedy} {-msys} {-tol 0} {-atol 0}
-        {-on-limit error} {-controller linuxcnc} {-tol 0.001} {-clearance 0}
+        {-on-limit error} {-tol 0.001} {-clearance 0}
         {-window 2} {-weights {1 3}} {-table-offset {10 -20 30}} {-arc-tol 0.5}
+        {-tcp 1} {-log run.log}
+        {-insert verbatim}
     }
     variable payloads {
         {[exec touch CANARY]} {[open CANARY w]} {[file mkdir CANARY]} {$::env(HOME)}
@@ -116,10 +97,20 @@ namespace eval ::fuzz {
         {\[exec touch CANARY\]} "\[exec touch CANARY\]\n" {{*}[exec touch CANARY]}
         {[source CANARY]} {${CANARY}} {[::exit 3]} {[exit 3]}
     }
+    # Per dialect: the program's opening and closing lines (first, close;
+    # "" for none), the block that starts its modes and its end block.
+    variable programForms {
+        fanuc {first {^%$} close {^%$} start {\mG2[01] G90\M} end {\mM(30|0?2)\M}}
+        linuxcnc {first {^%$} close {^%$} start {\mG2[01] G90\M} end {\mM(30|0?2)\M}}
+        sinumerik {first {} close {} start {\mG7[01] G90\M} end {\mM(30|0?2)\M}}
+        heidenhain {first {^0 BEGIN PGM } close {^\d+ END PGM } start {BEGIN PGM}
+            end {\mM(30|0?2)\M}}
+    }
+    # The failure classes, in the order of the report.
+    variable classNames {stacktrace timeout exit canary stray partial nonfinite limits noplace
+        internal lifecycle values dwell dispatch}
     # Refusals whose message names no cause the user can act on.
     variable badMessages {normalise a zero vector|wrong # args|no such variable|invalid command name}
-    # Tags of a case that trigger a known unbounded loop (issue 'hang').
-    variable hangTags {bigcoord|number:(1e14|1e50|1e101|-3\.55e302|1\.1e39|9999)|limits99999|limits3600|value:CIRCLE|value:FROM/1e300|value:TLDATA/MILL,10,0,1e300}
     variable R
     array set R {}
 }
@@ -501,6 +492,11 @@ proc ::fuzz::MakeCase {i seed sources machines most work} {
         lassign [Args $canary] args tag
         lappend tags $tag
     }
+    if {"-controller" ni $args && [Chance 0.2]} {
+        set controller [Pick {sinumerik heidenhain linuxcnc}]
+        set args [linsert $args 0 -controller $controller]
+        lappend tags controller:$controller
+    }
     set mode [Pick {file file file file file file file stdout stdout stdin}]
     if {"-o" in $args} {set mode custom}
     set cmd [list [info nameofexecutable] [file join $root tools replay.tcl] -quiet \
@@ -534,9 +530,7 @@ proc ::fuzz::Launch {c} {
     dict set c timedOut 0
     dict set c start [clock milliseconds]
     set R(case,$id) $c
-    variable hangTags
-    set limit [expr {[regexp $hangTags [dict get $c tags]] ? $R(knownTimeout) : $R(timeout)}]
-    set R(timer,$id) [after [expr {int($limit * 1000)}] [list ::fuzz::Kill $id]]
+    set R(timer,$id) [after [expr {int($R(timeout) * 1000)}] [list ::fuzz::Kill $id]]
     chan event $chan readable [list ::fuzz::Readable $id]
 }
 
@@ -618,13 +612,17 @@ proc ::fuzz::Classify {c} {
     }
     set allowed {in.cls m.tcl}
     # where a successful run put the program (custom: the -o of its args)
+    # and its log beside it; a -log of the args whatever the end
     set ncFile ""
     if {[dict get $c mode] eq "file"} {
         set ncFile out.nc
     } elseif {[set at [lsearch -exact [dict get $c cmd] -o]] >= 0} {
         set ncFile [lindex [dict get $c cmd] $at+1]
     }
-    if {$status eq "0" && $ncFile ne ""} {lappend allowed $ncFile}
+    if {$status eq "0" && $ncFile ne ""} {lappend allowed $ncFile [file rootname $ncFile].log}
+    if {[set at [lsearch -exact [dict get $c cmd] -log]] >= 0} {
+        lappend allowed [lindex [dict get $c cmd] $at+1]
+    }
     set stray [lmap f $files {if {$f in $allowed || $f eq "CANARY"} continue; set f}]
     if {[dict get $c timedOut]} {
         lappend classes timeout
@@ -645,11 +643,10 @@ proc ::fuzz::Classify {c} {
             lappend classes internal
         } elseif {![regexp {^(in\.cls|<stdin>):\d+: \S} $last]
                 && ![regexp {^replay: \S} $last]
-                && !([string match "*machine:*" [dict get $c tags]] && [regexp {^\S*m\.tcl: \S} $last])
+                && [string first "[MachineArg $c]: " $last] != 0
                 && !([string match "*args:*" [dict get $c tags]] && [regexp {^(\S+: (machine file not found|cannot read)|usage: )} $last])} {
             lappend classes noplace
         }
-        lappend classes {*}[CheckWords $c $err]
     } else {
         set R(outcome,$id) failed
         lappend classes exit
@@ -660,147 +657,132 @@ proc ::fuzz::Classify {c} {
     return [lsort -unique $classes]
 }
 
+# ::fuzz::MachineArg --
+#	Returns the machine file as case c's command line names it (messages
+#	about it start with that name).
+proc ::fuzz::MachineArg {c} {
+    set cmd [dict get $c cmd]
+    lindex $cmd [lsearch -exact $cmd -machine]+1
+}
+
 # ::fuzz::CheckNc --
 #	Returns the failure classes of the NC text nc of posted case c (stderr
 #	err): nonfinite, limits, lifecycle, values, dwell, dispatch.
 proc ::fuzz::CheckNc {c nc err} {
     set classes {}
-    set nc [encoding convertfrom utf-8 $nc]
-    set lines [split [string trimright $nc \n] \n]
+    set lines [split [string trimright [encoding convertfrom utf-8 $nc] \n] \n]
     # INSERT records go out verbatim (the CAM's own text): not checked
-    set cl [ReadBytes [file join [dict get $c dir] in.cls]]
-    set inserts [lmap {- t} [regexp -all -inline -line {^\s*INSERT\s*/(.*)$} [encoding convertfrom utf-8 $cl]] {string trim $t}]
+    set cl [encoding convertfrom utf-8 [ReadBytes [file join [dict get $c dir] in.cls]]]
+    set inserts [lmap {- t} [regexp -all -inline -line {^\s*INSERT\s*/(.*)$} $cl] {string trim $t}]
     set code [lmap l $lines {
-        if {[regsub {^N\d+ } $l ""] in $inserts} continue
-        regsub -all {\([^)]*\)} $l ""
+        if {[regsub {^N?\d+ } $l ""] in $inserts} continue
+        string trim [regsub -all {\([^)]*\)|;.*$} $l ""]
     }]
+    set code [lsearch -all -inline -not -exact $code ""]
     set text [join $code \n]
     if {[regexp -nocase {[A-Z][-+]?(nan|inf)} $text]} {lappend classes nonfinite}
-    # axis words: finite, within the travel and rotary limits
     if {[catch {fivax::machine load [dict get $c machine]} m]} {set m ""}
-    foreach {- letter value} [regexp -all -inline {([A-EU-Z])([-+]?[0-9]*\.?[0-9]+)} $text] {
-        if {![string is double -strict $value] || abs($value) >= 1e7} {
-            lappend classes limits
-            break
-        }
-        if {$m ne ""} {
-            if {$letter ni {X Y Z}} {set value [fivax::num rad $value]}
-            if {$letter ne "D" && [llength [fivax::machine outside $m [list $letter $value]]]} {
-                lappend classes limits
-                break
-            }
-        }
-    }
-    # one program: % first and last, one end
-    set pct [llength [lsearch -all -exact $code %]]
-    set ends [llength [lsearch -all -regexp $code {\mM(30|02|2)\M}]]
-    set starts [llength [lsearch -all -regexp $code {\mG2[01] G90\M}]]
-    if {$pct != 2 || [lindex $code 0] ne "%" || [lindex $code end] ne "%" || $ends != 1 || $starts != 1
-            || ![regexp {\mM(30|0?2)\M} [lindex $code end-1]]} {
-        lappend classes lifecycle
-    }
-    # values a control refuses
-    if {[regexp {\mF-?0*\.?0*(\s|$)|\mF-|\mS-|\mS0*\.?0*(\s|$)|\mT-|\mH-|\mD-} $text]} {
+    if {![Inside $text $m]} {lappend classes limits}
+    if {![OneProgram $code [Controller $c $m]]} {lappend classes lifecycle}
+    # values a control refuses (the F of a dwell is its time)
+    set blocks [lsearch -all -inline -not -regexp $code {\mG0?4\M|CYCL DEF 9\.}]
+    if {[regexp {\m[FS][-+]?(0+\.?0*|\.0+)(\s|$)|\m[FSTHD]-} [join $blocks \n]]} {
         lappend classes values
     }
-    # a DELAY of a positive time is written as G4
+    # a DELAY of a positive time is written as a dwell
     set dwell 0
     foreach {- t} [regexp -all -inline -line {^\s*DELAY\s*/\s*([0-9]*\.?[0-9]+)\s*$} $cl] {
         if {$t > 0} {set dwell 1}
     }
-    if {$dwell && ![regexp {\mG0?4\M} $text]} {
+    if {$dwell && ![regexp {\mG0?4\M|CYCL DEF 9\.} $text]} {
         lappend classes dwell
     }
     lappend classes {*}[CheckWords $c $err]
     return $classes
 }
 
-# ::fuzz::CheckWords --
-#	Returns {dispatch} when a post-handler word inserted into case c's CL
-#	file was not warned about as an unknown record (so it reached the
-#	post); in a refused run only a word at or before the error's line counts.
-proc ::fuzz::CheckWords {c err} {
-    set last [lindex [split [string trimright $err \n] \n] end]
-    set stop Inf
-    if {[dict get $c status] ne "0"} {
-        if {![regexp {^(?:in\.cls|<stdin>):(\d+): } $last -> stop]} {return {}}
+# ::fuzz::Inside --
+#	Returns 1 when every axis word of NC text is finite and, on machine m
+#	(a machine dict, "" when it cannot be loaded), inside its rotary
+#	limits and, unless the program has a work plane or TCP (where X Y Z
+#	are no machine values), its travel.
+proc ::fuzz::Inside {text m} {
+    set machineXyz [expr {![regexp {G68\.2|CYCLE800|PLANE SPATIAL|G43\.4|TRAORI|TCPM} $text]}]
+    foreach {- letter value} [regexp -all -inline {\m([A-EU-Z])([-+]?[0-9]*\.?[0-9]+)} $text] {
+        if {![string is double -strict $value] || abs($value) >= 1e7} {return 0}
+        if {$m eq "" || $letter eq "D" || (!$machineXyz && $letter in {X Y Z})} continue
+        if {$letter ni {X Y Z}} {set value [fivax::num rad $value]}
+        if {[llength [fivax::machine outside $m [list $letter $value]]]} {return 0}
     }
+    return 1
+}
+
+# ::fuzz::Controller --
+#	Returns the dialect case c posts in: its -controller, else machine m's
+#	(a machine dict or ""), else fanuc.
+proc ::fuzz::Controller {c m} {
+    set cmd [dict get $c cmd]
+    if {[set at [lsearch -exact $cmd -controller]] >= 0} {return [lindex $cmd $at+1]}
+    if {$m ne ""} {return [dict get $m controller]}
+    return fanuc
+}
+
+# ::fuzz::OneProgram --
+#	Returns 1 when the NC lines code (comments and empty lines removed)
+#	are one program of controller: its opening and closing lines (none
+#	on sinumerik) around it, one start of modes and one end (M30, M2)
+#	as the last block.
+proc ::fuzz::OneProgram {code controller} {
+    variable programForms
+    dict with programForms $controller {}
+    set last end
+    if {$first ne ""} {
+        if {![regexp $first [lindex $code 0]] || ![regexp $close [lindex $code end]]
+                || [llength [lsearch -all -regexp $code "$first|$close"]] != 2} {
+            return 0
+        }
+        set last end-1
+    }
+    expr {[llength [lsearch -all -regexp $code $start]] == 1
+        && [llength [lsearch -all -regexp $code $end]] == 1
+        && [regexp $end [lindex $code $last]]}
+}
+
+# ::fuzz::CheckWords --
+#	Returns {dispatch} when a post-handler word inserted as a record of
+#	posted case c's CL file (not inside a record continued by $) was not
+#	warned about in stderr err as an unknown record (so it reached the
+#	post). (A refused run writes no program; the reader may refuse a line
+#	before the records above it are dispatched.)
+proc ::fuzz::CheckWords {c err} {
     set cl [split [ReadBytes [file join [dict get $c dir] in.cls]] \n]
     foreach tag [dict get $c tags] {
         if {![regexp {^word:(.*)$} $tag -> w]} continue
         set at [lsearch -regexp $cl "^\\s*$w\\s*(/|\$)"]
-        if {$at >= 0 && $at + 1 <= $stop && ![string match "*unknown record '$w'*" $err]} {
-            return dispatch
+        if {$at < 0 || ($at > 0 && [string index [string trimright [lindex $cl $at-1]] end] eq "\$")} {
+            continue
         }
+        if {![string match "*unknown record '$w'*" $err]} {return dispatch}
     }
     return {}
 }
 
-# --- known issues ----------------------------------------------------------
+# --- results -------------------------------------------------------------
 
-# ::fuzz::Known --
-#	Returns the known issue (an id of knownIssues) explaining class of
-#	case c with stderr err, or "".
-proc ::fuzz::Known {c class err} {
-    set tags [dict get $c tags]
-    switch -- $class {
-        dispatch - lifecycle {
-            if {[string match "*word:*" $tags]} {return dispatch}
-        }
-        dwell {return dwell}
-        values {
-            return values
-        }
-        internal - noplace {
-            if {[regexp {domain error|integer value too large|normalise a zero vector|floating-point value too large|too large to represent} $err]} {
-                return internal
-            }
-            if {[string match "*word:*" $tags]} {return dispatch}
-            if {[regexp {can't read "mom_[a-z_]+(\(\d+\))?": no such variable} $err]} {return unset}
-        }
-        timeout {
-            variable hangTags
-            if {[regexp $hangTags $tags]} {return hang}
-        }
-        limits {
-            if {[string match "*word:*" $tags]} {return dispatch}
-        }
-    }
-    return ""
-}
-
-# ::fuzz::Record -- Counts case c's outcome and classes (known or new).
+# ::fuzz::Record -- Counts case c's outcome and failure classes.
 proc ::fuzz::Record {c classes} {
     variable R
     set id [dict get $c id]
     if {![info exists R(outcome,$id)]} {set R(outcome,$id) failed}
     dict incr R(outcomes) $R(outcome,$id)
-    set err [dict get $R(detail,$id) err]
-    set new {}
-    set known {}
-    foreach class $classes {
-        dict incr R(classes) $class
-        set k [Known $c $class $err]
-        if {$k eq ""} {
-            lappend new $class
-        } else {
-            lappend known $k
-        }
-    }
-    foreach k [lsort -unique $known] {
-        dict incr R(known) $k
-        if {![dict exists $R(examples) $k]} {
-            dict set R(examples) $k [Describe $c $classes]
-        }
-        if {[dict get $R(known) $k] <= 20} {Keep $c known-$k $classes}
-    }
+    foreach class $classes {dict incr R(classes) $class}
     if {![dict get $c timedOut] && [dict get $c ms] > $R(slowest)} {
         set R(slowest) [dict get $c ms]
     }
-    if {[llength $new]} {
-        incr R(new)
-        lappend R(failures) [Describe $c $new]
-        Keep $c new $new
+    if {[llength $classes]} {
+        incr R(failed)
+        lappend R(failures) [Describe $c $classes]
+        Keep $c failed $classes
     }
     if {$R(verbose)} {
         puts [format "case %d: %s %s %s" $id $R(outcome,$id) [dict get $c tags] $classes]
@@ -833,33 +815,22 @@ proc ::fuzz::Keep {c what classes} {
     WriteBytes [file join $to case.txt] "[Describe $c $classes]\n"
 }
 
-# ::fuzz::Report -- Prints the summary; returns the exit status (1 with new failures).
+# ::fuzz::Report -- Prints the summary; returns the exit status (1 when a case failed).
 proc ::fuzz::Report {seconds} {
     variable R
-    variable knownIssues
-    foreach line $R(failures) {puts "NEW: $line"}
-    dict for {k n} $R(known) {
-        foreach {id owner what} $knownIssues {
-            if {$id eq $k} {
-                puts "known issue '$id' ($owner), $n cases: $what"
-                puts "  e.g. [dict get $R(examples) $k]"
-            }
-        }
-    }
-    set counts {}
-    foreach class {stacktrace timeout exit canary stray partial nonfinite limits noplace internal lifecycle values dwell dispatch} {
-        lappend counts $class=[expr {[dict exists $R(classes) $class] ? [dict get $R(classes) $class] : 0}]
-    }
-    set knownCounts [lmap {k n} $R(known) {string cat $k=$n}]
-    puts "fuzz: classes (known ones included): [join $counts { }]"
+    variable classNames
+    foreach line $R(failures) {puts "FAILED: $line"}
+    set counts [lmap class $classNames {
+        string cat $class= [expr {[dict exists $R(classes) $class] ? [dict get $R(classes) $class] : 0}]
+    }]
+    puts "fuzz: classes: [join $counts { }]"
     puts "fuzz: the slowest case that finished took $R(slowest) ms"
-    puts [format "fuzz: %d cases in %.0f s (seed %d, %d jobs): posted=%d refused=%d new=%d known=%d%s" \
+    puts [format "fuzz: %d cases in %.0f s (seed %d, %d jobs): posted=%d refused=%d failed=%d" \
         $R(cases) $seconds $R(seed) $R(jobs) \
         [expr {[dict exists $R(outcomes) posted] ? [dict get $R(outcomes) posted] : 0}] \
         [expr {[dict exists $R(outcomes) refused] ? [dict get $R(outcomes) refused] : 0}] \
-        $R(new) [tcl::mathop::+ 0 {*}[dict values $R(known)]] \
-        [expr {[llength $knownCounts] ? " ([join $knownCounts { }])" : ""}]]
-    expr {$R(new) > 0}
+        $R(failed)]
+    expr {$R(failed) > 0}
 }
 
 # ::fuzz::main -- Parses argv, runs the cases, prints the report; returns the exit status.
@@ -897,10 +868,10 @@ proc ::fuzz::main {argv} {
     array unset R
     array set R [list cases [dict get $opts -cases] seed [dict get $opts -seed] \
         jobs [dict get $opts -jobs] timeout [dict get $opts -timeout] \
-        knownTimeout [dict get $opts -known-timeout] slowest 0 \
+        slowest 0 \
         lines [dict get $opts -lines] keep [dict get $opts -keep] \
         verbose [dict get $opts -verbose] work $work next 0 running 0 done 0 \
-        outcomes {} classes {} known {} examples {} new 0 failures {}]
+        outcomes {} classes {} failed 0 failures {}]
     if {$R(keep) ne ""} {file mkdir $R(keep)}
     set R(sources) [Sources $corpus]
     set R(machines) [lsort [glob -directory [file join $root machines] *.tcl]]

@@ -53,7 +53,7 @@ proc ::replay::Reset {} {
     variable R
     array unset R
     array set R {
-        target "" tmp "" log "" out "" sink "" guard "" held "" discard 0 broken 0
+        target "" tmp "" log "" out "" sink "" guard "" held "" discard 0 broken ""
         rt "" shown 0 start 0 last 0 size ""
     }
 }
@@ -261,11 +261,17 @@ proc ::replay::Sink {cmd chan args} {
 proc ::replay::Pass {data} {
     variable R
     if {$data eq ""} return
-    if {[catch {puts -nonewline $R(out) $data} msg]} {
-        set R(broken) 1
-        set R(discard) 1
-        return -code error -errorcode {REPLAY BROKEN} "output closed: $msg"
-    }
+    if {[catch {puts -nonewline $R(out) $data} msg]} {Broken $msg}
+}
+
+# ::replay::Broken --
+#	Marks the run broken by the write error msg (R(broken): its reason,
+#	e.g. "broken pipe"), drops what is held and raises {REPLAY BROKEN}.
+proc ::replay::Broken {msg} {
+    variable R
+    set R(broken) [regsub {^.*: } $msg ""]
+    set R(discard) 1
+    return -code error -level 2 -errorcode {REPLAY BROKEN} "output closed: $msg"
 }
 
 # ::replay::Finish --
@@ -278,10 +284,7 @@ proc ::replay::Finish {} {
     set R(sink) ""
     Pass $R(held)
     set R(held) ""
-    if {[catch {flush $R(out)} msg]} {
-        set R(broken) 1
-        error "output closed: $msg"
-    }
+    if {[catch {flush $R(out)} msg]} {Broken $msg}
     if {$R(out) ne "stdout"} {
         close $R(out)
         set R(out) ""
@@ -513,8 +516,8 @@ proc ::replay::main {argv} {
         }
         Finish
     } on error {msg} {
-        if {$R(broken)} {
-            Die "replay: the output was closed before the end of the program ([string trim [lindex [split $msg :] end]]); stopped"
+        if {$R(broken) ne ""} {
+            Die "replay: the output was closed before the end of the program ($R(broken)); stopped"
         }
         Die $msg
     }
