@@ -1,9 +1,9 @@
-# fivax -- five-axis postprocessor in Tcl. Targets: test, demo, bench.
+# fivax -- five-axis postprocessor in Tcl. Targets: test, demo, bench, fuzz.
 TCLSH ?= tclsh
 DEMO_MACHINE ?= machines/hh-tilt45.tcl
 DEMO_CL ?= tests/data/demo-5ax.cls
 
-.PHONY: all deps test demo docs bench clean
+.PHONY: all deps test demo docs bench fuzz clean
 
 all: test
 
@@ -43,6 +43,13 @@ docs: deps
 # -sizes "20000 100000", -machine machines/tt-ac.tcl). Some minutes.
 bench: deps
 	$(TCLSH) tools/bench.tcl $(BENCH_ARGS)
+
+# Mutated CL files, machine files and command lines through tools/replay.tcl
+# (FUZZ_CASES cases, default 10000; FUZZ_ARGS: e.g. -seed 2 -jobs 4 -keep DIR).
+# Fails when a case fails (the failures and the counts by class are printed).
+FUZZ_CASES ?= 10000
+fuzz: deps
+	$(TCLSH) tools/fuzz.tcl -cases $(FUZZ_CASES) $(FUZZ_ARGS)
 
 clean:
 	rm -rf out tests/tmp

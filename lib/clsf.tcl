@@ -14,9 +14,11 @@
 #	  AXIS    a direction whose length differs from 1 by more than 1e-3
 #	  WORD    missing, unknown or misplaced minor word
 #	  RANGE   a value outside its range (KNOT values in (0,1], ascending)
+#	  TEXT    a control character (NUL included) or bytes that are not UTF-8
+#	  LINE    a physical line or a record longer than 65536 characters
 
 namespace eval ::fivax::clsf {
-    namespace export open channel parse
+    namespace export open channel parse progress
     namespace ensemble create -prefixes 0
 }
 
@@ -36,13 +38,14 @@ proc ::fivax::clsf::open {path} {
     } on error {msg} {
         ::fivax::Fail CLSF OPEN "$path: cannot open: $msg"
     }
-    chan configure $chan -translation auto -encoding utf-8 -buffersize 65536
     Reader new $chan $path 1
 }
 
 # ::fivax::clsf::channel --
 #	Returns a Reader object on the open channel chan; name is the file name
-#	used in records and messages. Destroying the reader leaves chan open.
+#	used in records and messages. The reader reads the channel as bytes
+#	(UTF-8, any line ends) and without blocking; destroying it restores the
+#	channel's configuration and leaves it open.
 proc ::fivax::clsf::channel {chan name} {
     if {$chan ni [chan names]} {
         ::fivax::Fail CLSF OPEN "$name: cannot open: no channel named \"$chan\""
@@ -51,19 +54,55 @@ proc ::fivax::clsf::channel {chan name} {
 }
 
 oo::class create ::fivax::clsf::Reader {
-    # chan, name (for messages), line (last physical line read), own (1:
-    # close chan on destroy).
-    variable chan name line own
+    # chan, name (for messages), line (last physical line handed out), own
+    # (1: close chan on destroy), saved (the channel's configuration to
+    # restore), lines and idx (the decoded physical lines of the current
+    # chunk, ended by the sentinel NUL, and the next one to hand out; a
+    # refused line is NUL, the error detail, a space and the reason), carry
+    # (bytes after the chunk's last line end), bytes (bytes read so far),
+    # eof, skip (1: dropping the rest of an over-long line), partStart and
+    # partBytes (where the chunk starts in the input, and its length in
+    # bytes), count (records handed out), progress and tick (the progress
+    # command when the reader was made, and the count it runs at next).
+    # (The hot path of next uses few of them: each costs on every call.)
+    variable chan name line own saved lines idx carry bytes eof skip partStart partBytes \
+        count progress tick
 
     constructor {aChan aName aOwn} {
         set chan $aChan
         set name $aName
         set line 0
         set own $aOwn
+        set saved [dict filter [chan configure $chan] key -blocking -translation -encoding]
+        chan configure $chan -translation binary -blocking 0
+        set lines [list \0]
+        set idx 0
+        set carry ""
+        set bytes 0
+        set eof 0
+        set skip 0
+        set partStart 0
+        set partBytes 0
+        set count 0
+        set progress $::fivax::clsf::progress
+        set tick [expr {$progress eq "" ? Inf : $::fivax::clsf::progressEvery}]
     }
 
     destructor {
-        if {$own && $chan in [chan names]} {::close $chan}
+        if {$chan ni [chan names]} return
+        if {$own} {
+            ::close $chan
+        } else {
+            catch {chan configure $chan {*}$saved}
+        }
+    }
+
+    # Returns {line bytes}: the last physical line handed out and about
+    # how many bytes of the input it ends at (for progress reports).
+    method position {} {
+        set n [expr {[llength $lines] - 1}]
+        if {$n <= 0} {return [list $line [expr {$bytes - [string length $carry]}]]}
+        list $line [expr {$partStart + $partBytes * min($idx, $n) / $n}]
     }
 
     # Returns the next record dict, or {} at end of file. Joins "$"
@@ -71,30 +110,242 @@ oo::class create ::fivax::clsf::Reader {
     # error the reader stays usable: the bad record is consumed.
     method next {} {
         set n $line
-        while {[gets $chan text] >= 0} {
+        while {1} {
+            set text [lindex $lines $idx]
+            incr idx
+            if {[string index $text 0] eq "\0"} {
+                # the end of the chunk, or a refused line
+                if {$text eq "\0"} {
+                    if {[my Fill]} continue
+                    break
+                }
+                set line [incr n]
+                my Refuse $text $n
+            }
             set first [incr n]
             if {[string first "\$" $text] >= 0} {
-                # A single trailing $ continues the record (comments included).
-                set text [string trimright $text]
-                while {[string index $text end] eq "\$"
-                        && [string index $text end-1] ne "\$"} {
-                    set text [string range $text 0 end-1]
-                    if {[gets $chan more] < 0} {break}
-                    incr n
-                    append text " " [string trimright $more]
-                }
-                set c [string first "\$\$" $text]
-                if {$c >= 0} {set text [string range $text 0 [expr {$c - 1}]]}
+                set text [my Join $text $first n]
             }
             set text [string trim $text]
             if {$text eq ""} {continue}
             set line $n
             set rec [::fivax::clsf::parse $text $name $first]
-            if {[dict size $rec]} {return $rec}
+            if {[dict size $rec]} {
+                if {[incr count] >= $tick} {
+                    incr tick $::fivax::clsf::progressEvery
+                    {*}$progress $count {*}[my position]
+                }
+                return $rec
+            }
         }
         set line $n
         return {}
     }
+
+    # Returns text (the first physical line of a record, at line first)
+    # joined with the lines it continues to: a single trailing $ continues
+    # the record (comments included); drops a "$$" comment. nVar names the
+    # caller's line counter, advanced over the lines joined.
+    method Join {text first nVar} {
+        upvar 1 $nVar n
+        set maxRecord $::fivax::clsf::maxRecord
+        set text [string trimright $text]
+        while {[string index $text end] eq "\$" && [string index $text end-1] ne "\$"} {
+            set text [string range $text 0 end-1]
+            if {![my Physical more]} break
+            incr n
+            if {[string index $more 0] eq "\0"} {
+                set line $n
+                my Refuse $more $n
+            }
+            append text " " [string trimright $more]
+            if {[string length $text] > $maxRecord} {
+                set line [my SkipContinuations $more $n]
+                ::fivax::Fail CLSF LINE "$name:$first: record longer than\
+                    $maxRecord characters (continued to line $n)"
+            }
+        }
+        set c [string first "\$\$" $text]
+        if {$c >= 0} {set text [string range $text 0 [expr {$c - 1}]]}
+        return $text
+    }
+
+    # Sets the caller's variable var to the next physical line (a refusal
+    # included); returns 0 at the end of the input.
+    method Physical {var} {
+        upvar 1 $var text
+        while {1} {
+            set text [lindex $lines $idx]
+            incr idx
+            if {$text ne "\0"} {return 1}
+            if {![my Fill]} {return 0}
+        }
+    }
+
+    # Raises the error of the refused physical line lineNo (text: NUL, the
+    # error detail, a space and the reason; see ::fivax::clsf::Decode).
+    method Refuse {text lineNo} {
+        regexp {^\0(\S+) (.*)$} $text -> detail why
+        ::fivax::Fail CLSF $detail "$name:$lineNo: $why"
+    }
+
+    # Consumes the rest of a continuation chain whose last line so far
+    # (line lineNo) is text, without keeping it; returns the last line number.
+    method SkipContinuations {text lineNo} {
+        while {[string index $text end] eq "\$" && [string index $text end-1] ne "\$"} {
+            if {![my Physical text]} break
+            set text [string trimright $text]
+            incr lineNo
+        }
+        return $lineNo
+    }
+
+    # Reads the next chunk of complete lines into lines (decoded, line ends
+    # removed, the sentinel after them); returns 0 at end of input. Memory
+    # stays bounded: a line over maxLine characters is replaced by a
+    # refusal, and the rest of one that has no end yet is skipped.
+    method Fill {} {
+        namespace upvar ::fivax::clsf chunk chunk maxLine maxLine
+        while {1} {
+            if {$eof} {
+                if {$carry eq ""} {
+                    set lines [list \0]
+                    set idx 0
+                    return 0
+                }
+                set part $carry
+                set partStart [expr {$bytes - [string length $carry]}]
+                set partBytes [string length $carry]
+                set carry ""
+            } else {
+                set data [read $chan $chunk]
+                if {$data eq ""} {
+                    if {[eof $chan]} {
+                        set eof 1
+                        continue
+                    }
+                    # Nothing there yet (a pipe): wait for one byte, then
+                    # take what has come.
+                    chan configure $chan -blocking 1
+                    set data [read $chan 1]
+                    chan configure $chan -blocking 0
+                    append data [read $chan [expr {$chunk - 1}]]
+                    if {$data eq ""} continue
+                }
+                if {$bytes == 0 && [string range $data 0 2] eq "\xEF\xBB\xBF"} {
+                    set data [string range $data 3 end]
+                    set bytes 3
+                }
+                incr bytes [string length $data]
+                if {$skip} {
+                    set nl [string first \n $data]
+                    if {$nl < 0} continue
+                    set data [string range $data [expr {$nl + 1}] end]
+                    set skip 0
+                }
+                append carry $data
+                # Cut after the last line end: \n, or a lone \r that is
+                # not the last byte (its \n may follow in the next read).
+                set cut [string last \n $carry]
+                set cr [string last \r $carry end-1]
+                if {$cr > $cut} {set cut $cr}
+                if {$cut < 0} {
+                    if {[string length $carry] > $maxLine} {
+                        set skip 1
+                        set why [::fivax::clsf::Control [string range $carry 0 $maxLine]]
+                        if {$why eq ""} {set why "LINE line longer than $maxLine characters"}
+                        set lines [list "\0$why" \0]
+                        set carry ""
+                        set idx 0
+                        return 1
+                    }
+                    continue
+                }
+                set partStart [expr {$bytes - [string length $carry]}]
+                set partBytes [expr {$cut + 1}]
+                set part [string range $carry 0 [expr {$cut - 1}]]
+                if {[string index $part end] eq "\r" && [string index $carry $cut] eq "\n"} {
+                    # the \r of the \r\n the cut ends with
+                    set part [string range $part 0 end-1]
+                }
+                set carry [string range $carry [expr {$cut + 1}] end]
+            }
+            set lines [::fivax::clsf::Decode $part]
+            if {[string length $part] > $maxLine} {
+                set lines [lmap text $lines {
+                    if {[string length $text] > $maxLine} {
+                        set text "\0LINE line longer than $maxLine characters"
+                    }
+                    set text
+                }]
+            }
+            lappend lines \0
+            set idx 0
+            if {[llength $lines] > 1} {return 1}
+        }
+    }
+}
+
+namespace eval ::fivax::clsf {
+    # Longest physical line and longest record ($ continuations joined),
+    # in characters; bytes read per chunk.
+    variable maxLine 65536
+    variable maxRecord 65536
+    variable chunk 60000
+    # The progress command (see progress) and how many records apart it runs.
+    variable progress ""
+    variable progressEvery 256
+}
+
+# ::fivax::clsf::progress --
+#	Sets the command prefix that readers made from now on call every 256
+#	records with the records read, the line and about the bytes read to it
+#	(for a progress display); "" (the default) turns it off. Returns the
+#	previous one.
+proc ::fivax::clsf::progress {cmd} {
+    variable progress
+    set old $progress
+    set progress $cmd
+    return $old
+}
+
+# ::fivax::clsf::Decode --
+#	Returns the physical lines of part (bytes, line ends \n, \r\n or \r)
+#	as UTF-8 decoded strings. A line holding a control character other
+#	than tab (NUL included) or bytes that are not UTF-8 is replaced by a
+#	refusal: NUL, "TEXT", a space and the reason (a decoded line never
+#	holds NUL).
+proc ::fivax::clsf::Decode {part} {
+    if {[string first \r $part] >= 0} {set part [string map {\r\n \n \r \n} $part]}
+    set lines [split $part \n]
+    if {[string is ascii $part] && ![regexp {[\x00-\x08\x0b-\x1f\x7f]} $part]} {
+        return $lines
+    }
+    lmap text $lines {
+        set why [Control $text]
+        if {$why ne ""} {
+            set text "\0$why"
+        } elseif {![string is ascii $text]} {
+            set decoded [encoding convertfrom utf-8 $text]
+            if {[encoding convertto utf-8 $decoded] ne $text} {
+                set text "\0TEXT bytes that are not UTF-8 text"
+            } else {
+                set text $decoded
+            }
+        }
+        set text
+    }
+}
+
+# ::fivax::clsf::Control --
+#	Returns "TEXT control character 0xNN in column N" for the first
+#	control character in text other than tab, \n and \r (NUL included),
+#	or "".
+proc ::fivax::clsf::Control {text} {
+    if {![regexp -indices {[\x00-\x08\x0b\x0c\x0e-\x1f\x7f]} $text at]} {return ""}
+    set col [lindex $at 0]
+    scan [string index $text $col] %c code
+    format "TEXT control character 0x%02X in column %d" $code [expr {$col + 1}]
 }
 
 # ::fivax::clsf::parse --

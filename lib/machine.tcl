@@ -3,6 +3,8 @@
 #	list of key/value pairs, read with open/read and checked with
 #	[string is list] and dict access; it is never sourced or evaluated.
 #	Lengths stay in the file's units; angles are turned into radians.
+#	Also the one check of axis values against the machine's travel and
+#	rotary limits (outside, checkLimits), for whoever writes or reads them.
 #
 #	Errors: {FIVAX MACHINE <DETAIL>} with a message "<file>: <what>", where
 #	DETAIL is one of
@@ -15,9 +17,10 @@
 #	    VALUE      a value is malformed or out of range
 #	    AXES       wrong number or arrangement of rotary axes
 #	    GEOMETRY   degenerate axis geometry (parallel axes, tilt along Z)
+#	    LIMIT      (checkLimits) an axis value outside the travel or limits
 
 namespace eval ::fivax::machine {
-    namespace export load parse rotaryNames
+    namespace export load parse rotaryNames outside checkLimits
     namespace ensemble create -prefixes 0
 
     # Top-level keys and their defaults ("" default with required = 1).
@@ -27,11 +30,24 @@ namespace eval ::fivax::machine {
         clearance 50 safe_z {} feed_min 1 feed_max 20000
         inverse_time_max 9999 max_swing 180 work_offset 54 tool_change_z 0
         home_rotaries 0 entry_feed {} tcp 0 tcp_codes {} swivel_record TC1
+        travel {}
     }
     variable topRequired {name axes}
     variable axisKeys {side direction point sense min max continuous prefer rollover offset}
     # Stand-in for an unlimited continuous axis (radians).
     variable unlimited 1e300
+    # Largest magnitude of a length (file units), a rotary limit (deg) and a
+    # feed: beyond them a value is a typing error, not a machine.
+    variable maxLength 1e5
+    variable maxAngle 1e6
+    # Widest range (deg) of a limited axis and of a continuous axis with
+    # limits: each turn in the range is a candidate for the planner at
+    # every CL point, so a wider range multiplies the work (ten turns
+    # already triple it).
+    variable maxSpan {limited 720 continuous 3600}
+    variable maxFeed 1e7
+    # Values within this of a limit (mm, rad) are inside it.
+    variable limitSlack 1e-9
 }
 
 # ::fivax::machine::load --
@@ -118,22 +134,26 @@ proc ::fivax::machine::parse {text sourceName} {
     }
     set alpha [::fivax::num::rad $alphaDeg]
     dict set m alpha $alpha
-    set yH [Real $src y_H [Get $raw y_H]]
+    set yH [Length $src y_H [Get $raw y_H]]
     dict set m y_H $yH
 
     # Plain numbers.
-    dict set m pivot [Real $src pivot [Get $raw pivot]]
-    dict set m tool_length [Real $src tool_length [Get $raw tool_length]]
+    dict set m pivot [Length $src pivot [Get $raw pivot]]
+    dict set m tool_length [Length $src tool_length [Get $raw tool_length]]
     dict set m table_offset [Vector $src table_offset [Get $raw table_offset]]
-    set v [Real $src clearance [Get $raw clearance]]
+    set v [Length $src clearance [Get $raw clearance]]
     if {$v < 0} {::fivax::Fail MACHINE VALUE "$src: 'clearance' is negative: $v"}
     dict set m clearance $v
     set v [Get $raw safe_z]
-    if {$v ne ""} {set v [Real $src safe_z $v]}
+    if {$v ne ""} {set v [Length $src safe_z $v]}
     dict set m safe_z $v
+    variable maxFeed
     foreach key {feed_min feed_max inverse_time_max max_swing} {
         set v [Real $src $key [Get $raw $key]]
         if {$v <= 0} {::fivax::Fail MACHINE VALUE "$src: '$key' must be positive: $v"}
+        if {$v > $maxFeed} {
+            ::fivax::Fail MACHINE VALUE "$src: '$key' is out of range (at most $maxFeed): $v"
+        }
         dict set m $key $v
     }
     if {[dict get $m feed_min] > [dict get $m feed_max]} {
@@ -179,6 +199,7 @@ proc ::fivax::machine::parse {text sourceName} {
     # Axes.
     set axes [ParseAxes $src $family [dict get $raw axes] $alpha $yH]
     dict set m axes $axes
+    dict set m travel [Travel $src [Get $raw travel]]
     set heads [lmap a $axes {if {[dict get $a side] eq "head"} {set a} else continue}]
     set tables [lmap a $axes {if {[dict get $a side] eq "table"} {set a} else continue}]
     dict set m kind [dict get {
@@ -187,6 +208,7 @@ proc ::fivax::machine::parse {text sourceName} {
     set chain [concat [lreverse $heads] $tables]
     dict set m chain $chain
     CheckGeometry $src $chain
+    dict set m limits [Limits $m]
     return $m
 }
 
@@ -206,6 +228,34 @@ proc ::fivax::machine::Real {src key value {what ""}} {
     return $v
 }
 
+# ::fivax::machine::CheckSpan --
+#	Fails naming the axis (what) unless the limits min..max (radians) of
+#	a limited (continuous 0) or a continuous axis lie within maxSpan.
+proc ::fivax::machine::CheckSpan {src what continuous min max} {
+    variable maxSpan
+    set kind [expr {$continuous ? "continuous" : "limited"}]
+    set most [dict get $maxSpan $kind]
+    set span [::fivax::num::deg [expr {$max - $min}]]
+    if {$span <= $most + 1e-9} return
+    set hint [expr {$continuous
+        ? "leave out 'min' and 'max' for an unlimited axis"
+        : "a multi-turn axis is 'continuous 1'"}]
+    ::fivax::Fail MACHINE VALUE "$src: ${what}'min'..'max' spans [format %g $span] deg:\
+        a $kind axis spans at most $most deg ($hint)"
+}
+
+# ::fivax::machine::Length --
+#	Returns value as a finite double of magnitude at most maxLength, or
+#	fails naming key.
+proc ::fivax::machine::Length {src key value {what ""}} {
+    variable maxLength
+    set v [Real $src $key $value $what]
+    if {abs($v) > $maxLength} {
+        ::fivax::Fail MACHINE VALUE "$src: ${what}'$key' is out of range (at most $maxLength in magnitude): $value"
+    }
+    return $v
+}
+
 # ::fivax::machine::Choice -- Returns value when it is one of choices, else fails.
 proc ::fivax::machine::Choice {src key value choices {what ""}} {
     if {$value ni $choices} {
@@ -220,7 +270,59 @@ proc ::fivax::machine::Vector {src key value {what ""}} {
     if {![string is list $value] || [llength $value] != 3} {
         ::fivax::Fail MACHINE VALUE "$src: ${what}'$key' is not a list of 3 numbers: $value"
     }
-    lmap c $value {Real $src $key $c $what}
+    lmap c $value {Length $src $key $c $what}
+}
+
+# ::fivax::machine::Travel --
+#	Returns the linear travel {X {min max} Y {min max} Z {min max}} of the
+#	'travel' value (any of X Y Z, each {min max} in file units); an axis
+#	not given travels -maxLength..maxLength, the largest length a machine
+#	file may hold.
+proc ::fivax::machine::Travel {src value} {
+    variable maxLength
+    if {![string is list $value] || [llength $value] % 2} {
+        ::fivax::Fail MACHINE VALUE "$src: 'travel' is not a list of axis {min max} pairs: $value"
+    }
+    set out [dict create X [list -$maxLength $maxLength] Y [list -$maxLength $maxLength] \
+        Z [list -$maxLength $maxLength]]
+    set seen {}
+    foreach {axis range} $value {
+        if {$axis ni {X Y Z}} {
+            ::fivax::Fail MACHINE UNKNOWN "$src: travel: unknown axis '$axis' (X, Y or Z)"
+        }
+        if {$axis in $seen} {
+            ::fivax::Fail MACHINE DUPLICATE "$src: travel: axis '$axis' given twice"
+        }
+        lappend seen $axis
+        if {![string is list $range] || [llength $range] != 2} {
+            ::fivax::Fail MACHINE VALUE "$src: travel: $axis is not {min max}: $range"
+        }
+        lassign $range lo hi
+        set lo [Length $src min $lo "travel $axis: "]
+        set hi [Length $src max $hi "travel $axis: "]
+        if {$lo > $hi} {
+            ::fivax::Fail MACHINE VALUE "$src: travel $axis: 'min' exceeds 'max': $lo > $hi"
+        }
+        dict set out $axis [list $lo $hi]
+    }
+    return $out
+}
+
+# ::fivax::machine::Limits --
+#	Returns {X {min max} Y .. Z .. <rotary> {min max} ..}: the travel (file
+#	units) and the rotary limits (radians; an axis that rolls over is
+#	unlimited: its written values wrap) of the machine dict m.
+proc ::fivax::machine::Limits {m} {
+    variable unlimited
+    set out [dict get $m travel]
+    foreach axis [dict get $m axes] {
+        if {[dict get $axis continuous] && [dict get $axis rollover]} {
+            dict set out [dict get $axis name] [list -$unlimited $unlimited]
+        } else {
+            dict set out [dict get $axis name] [list [dict get $axis min] [dict get $axis max]]
+        }
+    }
+    return $out
 }
 
 # ::fivax::machine::ParseAxes --
@@ -293,9 +395,14 @@ proc ::fivax::machine::ParseAxes {src family axesText alpha yH} {
             }
         }
         set lim {}
+        variable maxAngle
         foreach key {min max} sign {-1 1} {
             if {[dict exists $p $key]} {
-                dict set lim $key [::fivax::num::rad [Real $src $key [dict get $p $key] $what]]
+                set deg [Real $src $key [dict get $p $key] $what]
+                if {abs($deg) > $maxAngle} {
+                    ::fivax::Fail MACHINE VALUE "$src: ${what}'$key' is out of range (at most $maxAngle deg in magnitude): $deg"
+                }
+                dict set lim $key [::fivax::num::rad $deg]
             } elseif {$continuous} {
                 dict set lim $key [expr {$sign * $unlimited}]
             } else {
@@ -304,7 +411,15 @@ proc ::fivax::machine::ParseAxes {src family axesText alpha yH} {
             }
         }
         if {[dict get $lim min] > [dict get $lim max]} {
-            ::fivax::Fail MACHINE VALUE "$src: ${what}'min' exceeds 'max'"
+            ::fivax::Fail MACHINE VALUE "$src: ${what}'min' exceeds 'max': [dict get $p min] > [dict get $p max]"
+        }
+        if {[dict exists $p min] != [dict exists $p max]} {
+            set key [expr {[dict exists $p min] ? "max" : "min"}]
+            ::fivax::Fail MACHINE MISSING \
+                "$src: ${what}missing key '$key' (a continuous axis has both limits or none)"
+        }
+        if {[dict exists $p min]} {
+            CheckSpan $src $what $continuous [dict get $lim min] [dict get $lim max]
         }
         if {$family eq "headhead"} {
             foreach key {direction point} {
@@ -382,4 +497,45 @@ proc ::fivax::machine::CheckGeometry {src chain} {
 #	the 4th axis word, then the 5th).
 proc ::fivax::machine::rotaryNames {machine} {
     lsort [lmap axis [dict get $machine chain] {dict get $axis name}]
+}
+
+# ::fivax::machine::outside --
+#	Returns {axis value min max} for the first value of values (a dict
+#	axis -> value: X Y Z in the machine's units, rotaries in radians, as in
+#	a move record's axes) outside the machine's travel or rotary limits,
+#	or {} when all are inside (axes the machine does not have are ignored;
+#	a value that is not a finite number is outside).
+proc ::fivax::machine::outside {machine values} {
+    variable limitSlack
+    set limits [dict get $machine limits]
+    dict for {axis v} $values {
+        if {![dict exists $limits $axis]} continue
+        lassign [dict get $limits $axis] lo hi
+        if {!([string is double -strict $v] && $v >= $lo - $limitSlack && $v <= $hi + $limitSlack)} {
+            return [list $axis $v $lo $hi]
+        }
+    }
+    return {}
+}
+
+# ::fivax::machine::checkLimits --
+#	Raises {FIVAX MACHINE LIMIT} "WHERE: Z 1000000.000 is outside the
+#	travel of NAME (-500..500)" when a value of values (as for outside)
+#	lies outside the machine's travel or rotary limits (where: FILE:LINE).
+proc ::fivax::machine::checkLimits {machine values where} {
+    set bad [outside $machine $values]
+    if {![llength $bad]} return
+    lassign $bad axis v lo hi
+    set name [dict get $machine name]
+    if {$axis in {X Y Z}} {
+        set what "the travel of $name ([format %g $lo]..[format %g $hi])"
+        set shown $v
+    } else {
+        set what "the limits of $axis on $name ([format %g [::fivax::num::deg $lo]]..[format %g [::fivax::num::deg $hi]] deg)"
+        set shown [expr {[string is double -strict $v] ? [::fivax::num::deg $v] : $v}]
+    }
+    if {[string is double -strict $shown] && abs($shown) < 1e15} {
+        set shown [::fivax::num::fixed $shown 3]
+    }
+    ::fivax::Fail MACHINE LIMIT "$where: $axis $shown is outside $what"
 }

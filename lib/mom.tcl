@@ -750,12 +750,15 @@ oo::class create ::fivax::mom::Runtime {
         my Array mom_arc_center $center
         my Array mom_arc_axis $axis
         set event [expr {$helix && [my Has MOM_helix_move] ? "helix_move" : "circular_move"}]
+        # (the first piece starts at start: the end itself at a first motion)
+        set from $start
         foreach piece $pieces {
             lassign $piece p sweep
             # a piece turns at most once: no extra turns
             my Globals [concat $pairs [list mom_arc_times 0 \
                 mom_arc_angle [::fivax::num::deg $sweep] \
-                mom_helix_pitch [my Pitch $S(point) $p $axis $sweep]]]
+                mom_helix_pitch [my Pitch $from $p $axis $sweep]]]
+            set from $p
             my SetPosition $p $S(axis)
             my Move $event
         }

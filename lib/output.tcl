@@ -279,6 +279,13 @@ oo::class create ::fivax::output::Writer {
         expr {10.0 ** -[$nc decimals $addr]}
     }
 
+    # Returns {length angle}: the output resolution of X (file units) and
+    # of the rotaries (degrees), one unit of their last decimal.
+    method resolution {} {
+        set addr [expr {[dict get $dialect syntax] eq "klartext" ? "KX" : "X"}]
+        list [expr {10.0 ** -[$nc decimals $addr]}] [my angleStep]
+    }
+
     # Returns what the dialect can write, for the planner: a dict of
     # controller, inverse (G93 exists), plane (a work plane exists), arcPlanes (the
     # planes of native arcs), helix (1: helical arcs), tcp (TCP mode on).

@@ -5,7 +5,7 @@
 #	arc tolerance) and those of the planner, each spelt once.
 
 namespace eval ::fivax::settings {
-    namespace export table parse pick
+    namespace export table parse pick check
     namespace ensemble create -prefixes 0
     variable Job {
         {-machine text {} FILE "machine file (default: the post's machine, machines/hh-tilt45.tcl)"}
@@ -51,4 +51,35 @@ proc ::fivax::settings::pick {settings module} {
         if {$name in $names} {lappend out $name $value}
     }
     return $out
+}
+
+# ::fivax::settings::check --
+#	Checks the settings (a parsed settings dict) that depend on machine (a
+#	fivax::machine dict) and on resolution ({length angle}, the output
+#	layer's resolution of X Y Z and of the rotaries): -tol and -atol are 0
+#	(off) or at least that resolution, -arc-tol at least that of X Y Z (a
+#	finer tolerance can never be met, and chasing it multiplies the work
+#	without bound); -table-offset and -clearance are lengths the machine
+#	file could hold. who prefixes messages. Errors: {FIVAX OPTION VALUE}
+#	naming the option.
+proc ::fivax::settings::check {settings machine resolution {who fivax_settings}} {
+    lassign $resolution mm deg
+    foreach {opt res unit what} [list -tol $mm "" "X Y Z" -atol $deg " deg" "the rotary axes" \
+            -arc-tol $mm "" "X Y Z"] {
+        set v [dict get $settings $opt]
+        if {$v != 0 && $v < $res} {
+            set off [expr {$opt eq "-arc-tol" ? "" : "0 (off) or "}]
+            ::fivax::Fail OPTION VALUE "$who: bad $opt \"$v\": must be ${off}at least\
+                $res$unit, the output resolution of $what on [dict get $machine name]"
+        }
+    }
+    set max $::fivax::machine::maxLength
+    foreach opt {-table-offset -clearance} {
+        foreach v [dict get $settings $opt] {
+            if {abs($v) > $max} {
+                ::fivax::Fail OPTION VALUE "$who: bad $opt \"[dict get $settings $opt]\":\
+                    must be at most [format %g $max] in magnitude"
+            }
+        }
+    }
 }

@@ -9,8 +9,10 @@
 #	tool axis (spec section 7). Two hosts share this code: the post checks
 #	each block it writes (method block, with the planner's CL target), and
 #	tools/verify.tcl checks whole NC files of any post (methods read, tip,
-#	deviation, interior). It knows nothing of how the planner chose the
-#	blocks: it depends on kin only.
+#	deviation, interior); in the post's blocks a value outside the
+#	machine's travel or rotary limits is refused with the CL record's
+#	FILE:LINE (machine checkLimits). It knows nothing of how the planner
+#	chose the blocks: it depends on kin and the machine's limits only.
 #
 #	Dialects: the text of a block is turned into address words by the
 #	Dialects table below (comments, lines that are no blocks, the word
@@ -153,13 +155,7 @@ oo::class create ::fivax::verify::Checker {
         set S(names) [lmap axis $chain {dict get $axis name}]
         set S(tcpCodes) [dict get $machine tcp_codes]
         set S(rollover) [lmap axis $chain {dict get $axis rollover}]
-        set S(limits) [lmap axis $chain {
-            if {[dict get $axis continuous] && [dict get $axis rollover]} {
-                list -1e300 1e300
-            } else {
-                list [dict get $axis min] [dict get $axis max]
-            }
-        }]
+        set S(limits) [lmap name $S(names) {dict get $machine limits $name}]
         array set S {X {} Y {} Z {} q1 {} q2 {} motion {} mode direct F {} prev {}
             cycle 0 return 98 initial {} bottom {} R {} tcp 0 frame {} plane 17 cc {}
             checked 0 segments 0 maxPos 0.0 maxAng 0.0 maxMidPos 0.0 maxMidAng 0.0
@@ -595,6 +591,24 @@ oo::class create ::fivax::verify::Checker {
         return $j1
     }
 
+    # Raises {FIVAX MACHINE LIMIT} with the move's FILE:LINE (machine
+    # checkLimits) when the block read as blk leaves the machine's X Y Z
+    # travel (its machine X Y Z, when known) or a rotary's limits.
+    method CheckLimits {blk line move} {
+        set values {}
+        set joints [dict get $blk joints]
+        if {$joints ne ""} {
+            foreach axis {X Y Z} v [lrange $joints 0 2] {dict set values $axis $v}
+        }
+        foreach axis [dict get $blk limit] {
+            dict set values $axis $S(q[expr {[lsearch -exact $S(names) $axis] + 1}])
+        }
+        if {![llength [::fivax::machine::outside $S(machine) $values]]} return
+        set where [dict get $move src]
+        if {$where eq ""} {set where "NC block '$line'"}
+        ::fivax::machine::checkLimits $S(machine) $values $where
+    }
+
     # Reads the NC line (the post's own block) and, when move (a motion
     # move record) carries a CL target (P, t), measures the deviation of
     # the block's pose at its end and, for joint-space cutting moves (the
@@ -607,6 +621,7 @@ oo::class create ::fivax::verify::Checker {
     # summary keeps).
     method block {line move} {
         set blk [my read $line]
+        my CheckLimits $blk $line $move
         set P [dict get $move P]
         set pose [dict get $blk pose]
         if {$P eq "" || $pose eq ""} {

@@ -9,6 +9,10 @@ alpha       0
 y_H         -5.5
 pivot       433.75
 tool_length 0
+# Linear travel of X Y Z (machine coordinates, mm): example values, wide
+# enough for the samples and the real CL files; set your machine's. A value
+# outside is refused with FILE:LINE, never written.
+travel      {X {-3000 3000} Y {-3000 3000} Z {-2000 2000}}
 axes {
     # outer axis first: C carries B
     C {side head sense -1 min 0 max 360 continuous 0 prefer none}

@@ -7,6 +7,10 @@ units       mm
 family      chain
 pivot       125
 tool_length 0
+# Linear travel of X Y Z (machine coordinates, mm): example values, wide
+# enough for the samples and the real CL files; set your machine's. A value
+# outside is refused with FILE:LINE, never written.
+travel      {X {-3000 3000} Y {-3000 3000} Z {-2000 2000}}
 axes {
     B {side head direction {0 1 0} point {0 0 0} sense 1 min -90 max 90 prefer negative}
     C {side table direction {0 0 1} point {0 0 0} sense -1 min 0 max 360 continuous 0 prefer none}

@@ -15,6 +15,10 @@ units       mm
 family      chain
 pivot       150
 tool_length 0
+# Linear travel of X Y Z (machine coordinates, mm): example values, wide
+# enough for the samples and the real CL files; set your machine's. A value
+# outside is refused with FILE:LINE, never written.
+travel      {X {-3000 3000} Y {-3000 3000} Z {-2000 2000}}
 axes {
     B {side head direction {0 1 0} point {0 0 0} sense 1 offset 90 min -10 max 190 prefer none}
     C {side table direction {0 0 1} point {0 0 0} sense -1 continuous 1}

@@ -212,8 +212,9 @@ proc MOM_first_tool {} {
 }
 
 # The tool number must be a positive integer; a length register of 0 (NX's
-# "not set") means the tool number. The spindle goes up to the tool-change
-# height first; the next operation approaches from there.
+# "not set") means the tool number, and so does a negative one (with a
+# warning). The spindle goes up to the tool-change height first; the next
+# operation approaches from there.
 proc MOM_tool_change {} {fivax_guard {
     global fivax mom_tool_number mom_tool_length mom_tool_length_adjust_register
     if {![info exists mom_tool_number] || ![string is entier -strict $mom_tool_number]
@@ -225,9 +226,12 @@ proc MOM_tool_change {} {fivax_guard {
     if {[info exists mom_tool_length] && $mom_tool_length > 0} {set len $mom_tool_length}
     set adjust $mom_tool_number
     if {[info exists mom_tool_length_adjust_register]
-            && [string is entier -strict $mom_tool_length_adjust_register]
-            && $mom_tool_length_adjust_register > 0} {
-        set adjust $mom_tool_length_adjust_register
+            && [string is entier -strict $mom_tool_length_adjust_register]} {
+        if {$mom_tool_length_adjust_register > 0} {
+            set adjust $mom_tool_length_adjust_register
+        } elseif {$mom_tool_length_adjust_register < 0} {
+            fivax_warn "length register $mom_tool_length_adjust_register is negative: H$adjust (the tool number) is used"
+        }
     }
     # the tool in the spindle again: no second change
     if {[list $mom_tool_number $adjust $len] eq $fivax(tool)} return
@@ -266,11 +270,19 @@ proc MOM_coolant_off {} {fivax_guard {
     fivax_out [$fivax(out) coolantOff]
 }}
 
-# fivax_spindle -- Writes the spindle start from mom_spindle_* (nothing when off or unset).
+# fivax_spindle --
+#	Writes the spindle start from mom_spindle_* (nothing when off or
+#	unset, nor for a speed of 0 or, with a warning, a negative one or one
+#	below 1 rpm, which would be written S0).
 proc fivax_spindle {} {
     global fivax mom_spindle_speed mom_spindle_direction mom_spindle_status
-    if {![info exists mom_spindle_speed] || ![string is double -strict $mom_spindle_speed]
-            || $mom_spindle_speed <= 0} return
+    if {![info exists mom_spindle_speed] || ![string is double -strict $mom_spindle_speed]} return
+    if {$mom_spindle_speed < 1} {
+        if {$mom_spindle_speed != 0} {
+            fivax_warn "spindle speed $mom_spindle_speed rpm is below 1 rpm: not written"
+        }
+        return
+    }
     if {[info exists mom_spindle_status] && $mom_spindle_status eq "OFF"} return
     set direction [expr {[info exists mom_spindle_direction] ? $mom_spindle_direction : "CLW"}]
     fivax_emit [$fivax(plan) flush]
@@ -420,7 +432,9 @@ proc MOM_cycle_off {} {fivax_guard {
 
 # fivax_emit --
 #	Writes the planner's move records as blocks and checks each one;
-#	retracts are reported on the listing and in the log.
+#	retracts are reported on the listing and in the log. A value the
+#	output refuses (beyond a MIN/MAX of the .def) names the move's CL
+#	record.
 proc fivax_emit {moves} {
     global fivax
     foreach move $moves {
@@ -428,7 +442,12 @@ proc fivax_emit {moves} {
             fivax_log "retract at [dict get $move src]: [dict get $move note]"
         }
         # the move ends with its last block; those before it (G80 ...) carry no CL point
-        set lines [$fivax(out) move $move]
+        try {
+            set lines [$fivax(out) move $move]
+        } trap {FIVAX NC} {msg opts} {
+            if {[dict get $move src] ne ""} {set msg "[dict get $move src]: $msg"}
+            return -code error -errorcode [dict get $opts -errorcode] $msg
+        }
         foreach line [lrange $lines 0 end-1] {
             fivax_out [list $line]
             $fivax(verify) block $line {kind none P {} t {} src {}}

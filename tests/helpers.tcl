@@ -19,14 +19,11 @@ set ::auto_path [linsert $::auto_path 0 [file join $::fivaxRoot lib]]
 package require fivax 0.1
 source [file join $::fivaxRoot tests kinref.tcl]
 source [file join $::fivaxRoot tools lib toolpath.tcl]
+source [file join $::fivaxRoot tools lib corpus.tcl]
 
 # Where the real CL files live (outside the repo, never copied into it):
 # FIVAX_CORPUS, else ../shared/data/cl beside the checkout.
-if {[info exists ::env(FIVAX_CORPUS)] && $::env(FIVAX_CORPUS) ne ""} {
-    set ::clCorpus [file normalize $::env(FIVAX_CORPUS)]
-} else {
-    set ::clCorpus [file normalize [file join $::fivaxRoot .. shared data cl]]
-}
+set ::clCorpus [::fivax::corpusDir $::fivaxRoot]
 testConstraint clsfCorpus [file isdirectory $::clCorpus]
 if {![testConstraint clsfCorpus] && ![info exists ::corpusNoted]} {
     set ::corpusNoted 1

@@ -6,25 +6,69 @@
 #	Run with -help for the options: the posting job's settings
 #	([fivax::settings table], the same table the post reads) plus -o and
 #	-quiet.
+#
+#	Every option value, the machine file and the output path are checked
+#	before anything runs. Errors are one line ("FILE:LINE: what", or
+#	"replay: ..."), exit status 1, never a Tcl stack trace.
+#
+#	Output. Without -o the program streams to standard output; with -o it
+#	goes to a temporary file beside the target, renamed into place at the
+#	end (a FIFO or character device named by -o is written directly, like
+#	standard output), and the post's log (warnings, retracts, errors) to
+#	<target>.log beside it by the same rule (without -log; a FIFO or
+#	device target has no log). Every block reaches its destination one output
+#	buffer late: when a run fails (a written value outside the machine's
+#	limits is refused right after it was formatted) the held-back buffer
+#	is dropped, so the offending block is never written. The temporary
+#	files are removed on every exit path: errors and a broken pipe here,
+#	and signals (which pure Tcl cannot catch) by a guard process that
+#	removes them when this process ends in any way (see ::replay::Guard).
+#
+#	Progress. When standard error is a terminal (and without -quiet) a
+#	progress line there, at most twice a second: records, percent of the
+#	input bytes, rate and the time left.
 
 package require Tcl 8.6
 
-set root [file dirname [file dirname [file normalize [info script]]]]
-set auto_path [linsert $auto_path 0 [file join $root lib]]
-package require fivax 0.1
-
 namespace eval ::replay {
+    variable root [file dirname [file dirname [file normalize [info script]]]]
     # Options of the command line only; the others are the job settings.
     variable cliOptions {
-        {-o text {} FILE "output NC file (default: standard output)"}
-        {-quiet bool 0 "" "no summary on standard error"}
+        {-o text {} FILE "output NC file (default, or -: standard output)"}
+        {-quiet bool 0 "" "no summary and no progress line on standard error"}
         {-help bool 0 "" "print this help"}
     }
+    # Output buffer (bytes): blocks reach the destination one buffer late.
+    variable bufferSize 65536
+    # Shortest time between two progress lines (ms).
+    variable progressMs 500
+    # The run's state (see Reset).
+    variable R
+}
+set auto_path [linsert $auto_path 0 [file join $::replay::root lib]]
+package require fivax 0.1
+
+# ::replay::Reset -- Clears the run's state: output target, sink, guard, progress.
+proc ::replay::Reset {} {
+    variable R
+    array unset R
+    array set R {
+        target "" tmp "" log "" out "" sink "" guard "" held "" discard 0 broken ""
+        rt "" shown 0 start 0 last 0 size ""
+    }
+}
+::replay::Reset
+
+# ::replay::Say -- Prints msg on standard error (a closed stderr is ignored).
+proc ::replay::Say {msg} {
+    ClearProgress
+    catch {puts stderr $msg}
 }
 
-# ::replay::Die -- Prints msg on standard error and exits with status 1.
+# ::replay::Die -- Cleans up, prints msg on standard error and exits with status 1.
 proc ::replay::Die {msg} {
-    puts stderr $msg
+    Cleanup
+    Say $msg
     exit 1
 }
 
@@ -38,6 +82,11 @@ proc ::replay::Table {} {
 proc ::replay::ParseArgs {argv} {
     try {
         lassign [::fivax::opts argv [Table] $argv replay] opts rest
+    } trap {FIVAX OPTION UNKNOWN} {msg} {
+        if {[regexp {unknown option "(.*)": must be} $msg -> name]} {
+            Die "replay: unknown option $name (-help lists the options)"
+        }
+        Die $msg
     } trap {FIVAX OPTION} {msg} {
         Die $msg
     }
@@ -45,27 +94,326 @@ proc ::replay::ParseArgs {argv} {
         puts "usage: tclsh tools/replay.tcl ?options? part.cls\n\nReplays an NX CLSF file through the fivax post.\nOptions:\n[::fivax::opts help [Table]]"
         exit 0
     }
-    if {[llength $rest] != 1} {
+    if {[llength $rest] == 0} {
         Die "usage: tclsh tools/replay.tcl ?options? part.cls (-help for the options)"
+    }
+    if {[llength $rest] > 1} {
+        Die "replay: expected one CL file after the options, got [llength $rest] words: [lrange $rest 0 3]"
     }
     list $opts [lindex $rest 0]
 }
 
+# ::replay::CheckInput --
+#	Dies unless clsf ("-": standard input) is a file that can be read.
+proc ::replay::CheckInput {clsf} {
+    if {$clsf eq "-"} return
+    if {[file isdirectory $clsf]} {Die "$clsf: cannot read CL file: is a directory"}
+    if {![file readable $clsf]} {Die "$clsf: cannot read CL file"}
+}
+
+# ::replay::CheckMachine --
+#	Loads and checks the machine file of settings, its output settings
+#	(with the post's .def, as the post makes its output layer) and the
+#	settings that depend on them; returns the machine dict or dies.
+proc ::replay::CheckMachine {settings} {
+    variable root
+    set file [dict get $settings -machine]
+    try {
+        set machine [::fivax::machine load $file]
+        set options [list -def [::fivax::def load [file join $root post fivax.def]]]
+        foreach key {-controller -tcp} {
+            if {[dict get $settings $key] ne ""} {
+                lappend options $key [dict get $settings $key]
+            }
+        }
+        set out [::fivax::output create $machine {*}$options]
+        set resolution [$out resolution]
+        $out destroy
+        ::fivax::settings check $settings $machine $resolution replay
+    } trap {FIVAX MACHINE NOFILE} {} {
+        Die "$file: machine file not found"
+    } trap {FIVAX} {msg} {
+        Die $msg
+    }
+    return $machine
+}
+
+# ::replay::Resolve --
+#	Returns the path a symbolic link path finally points to (path itself
+#	when it is no link); dies on a loop.
+proc ::replay::Resolve {path} {
+    for {set hops 0} {$hops < 40} {incr hops} {
+        if {[catch {file type $path} type] || $type ne "link"} {return $path}
+        set to [file readlink $path]
+        set path [file normalize [file join [file dirname $path] $to]]
+    }
+    Die "replay: $path: too many levels of symbolic links"
+}
+
+# ::replay::SameFile -- Returns 1 when paths a and b name the same existing file.
+proc ::replay::SameFile {a b} {
+    if {[catch {file stat $a sa}] || [catch {file stat $b sb}]} {return 0}
+    expr {$sa(dev) == $sb(dev) && $sa(ino) == $sb(ino)}
+}
+
+# ::replay::CheckTarget --
+#	Checks the path out of option (-o or -log) against the inputs (clsf,
+#	machine file) and returns {direct path} or {file path}: the resolved
+#	target and how it is written (direct: a FIFO or character device,
+#	opened as it is; file: a regular file). Dies with "replay: -o ...".
+proc ::replay::CheckTarget {option out clsf machineFile} {
+    set path [Resolve [file normalize $out]]
+    set shown "replay: $option $out"
+    foreach {input what} [list $clsf "the CL file" $machineFile "the machine file"] {
+        if {$input ne "-" && [SameFile $path $input]} {Die "$shown: is $what"}
+    }
+    if {[file exists $path]} {
+        switch -- [file type $path] {
+            directory {Die "$shown: is a directory"}
+            fifo - characterSpecial {
+                if {![file writable $path]} {Die "$shown: permission denied"}
+                return [list direct $path]
+            }
+            file {
+                if {![file writable $path]} {Die "$shown: permission denied"}
+            }
+            default {Die "$shown: not a regular file ([file type $path])"}
+        }
+    }
+    set dir [file dirname $path]
+    if {![file isdirectory $dir]} {Die "$shown: no such directory: $dir"}
+    if {![file writable $dir]} {Die "$shown: cannot write in $dir: permission denied"}
+    list file $path
+}
+
+# ::replay::Guard --
+#	Starts the guard of the temporary files tmp and tmp.log: a shell that
+#	ignores the usual signals and removes them once its standard input (a
+#	pipe from this process) closes, i.e. when this process ends, whatever
+#	ends it (exit, error, SIGINT, SIGTERM, SIGHUP, SIGKILL). After the
+#	renames the paths are gone and the removal does nothing. Returns the
+#	pipe, or "" where no POSIX shell runs it (the error paths still
+#	remove them).
+proc ::replay::Guard {tmp} {
+    set script {trap "" HUP INT QUIT PIPE TERM; cat >/dev/null; rm -f -- "$1" "$1.log"}
+    # In a session of its own (where setsid exists) signals sent to this
+    # process group, even SIGKILL, do not reach it.
+    set cmd [list sh -c $script fivax-guard $tmp]
+    if {[auto_execok setsid] ne ""} {set cmd [linsert $cmd 0 setsid]}
+    if {[catch {open |[concat $cmd {>/dev/null 2>/dev/null}] w} chan]} {
+        return ""
+    }
+    return $chan
+}
+
+# ::replay::OpenTarget --
+#	Opens the output: standard output (target ""), a direct target, or a
+#	temporary file beside a file target under a guard, whose log goes to
+#	log ("": none). Sets R(out).
+proc ::replay::OpenTarget {target log} {
+    variable R
+    if {$target eq ""} {
+        set R(out) stdout
+    } else {
+        lassign $target how path
+        if {$how eq "direct"} {
+            if {[catch {open $path WRONLY} chan]} {
+                Die "replay: -o $path: cannot write: [string trim [lindex [split $chan :] end]]"
+            }
+            set R(out) $chan
+        } else {
+            set R(target) $path
+            set tmp $path.tmp-[pid]-[clock clicks]
+            set R(guard) [Guard $tmp]
+            if {[catch {open $tmp {WRONLY CREAT EXCL}} chan]} {
+                Die "replay: -o $path: cannot write: [string trim [lindex [split $chan :] end]]"
+            }
+            set R(tmp) $tmp
+            set R(log) $log
+            set R(out) $chan
+        }
+    }
+    chan configure $R(out) -translation binary -buffering full
+}
+
+# ::replay::Sink --
+#	The reflected channel the post writes to. Each buffer written is
+#	passed on to R(out) when the next one arrives, and the last one when
+#	the run succeeded (Finish); a failed run drops it (R(discard)). A
+#	write error on R(out) (a closed pipe) marks the run broken.
+proc ::replay::Sink {cmd chan args} {
+    variable R
+    switch -- $cmd {
+        initialize {return {initialize finalize watch write}}
+        finalize - watch {return}
+        write {
+            set data [lindex $args 0]
+            if {!$R(discard)} {
+                Pass $R(held)
+                set R(held) $data
+            }
+            return [string length $data]
+        }
+    }
+}
+
+# ::replay::Pass -- Writes data to R(out); a failure marks the run broken and raises.
+proc ::replay::Pass {data} {
+    variable R
+    if {$data eq ""} return
+    if {[catch {puts -nonewline $R(out) $data} msg]} {Broken $msg}
+}
+
+# ::replay::Broken --
+#	Marks the run broken by the write error msg (R(broken): its reason,
+#	e.g. "broken pipe"), drops what is held and raises {REPLAY BROKEN}.
+proc ::replay::Broken {msg} {
+    variable R
+    set R(broken) [regsub {^.*: } $msg ""]
+    set R(discard) 1
+    return -code error -level 2 -errorcode {REPLAY BROKEN} "output closed: $msg"
+}
+
+# ::replay::Finish --
+#	Ends a successful run: the sink's last buffers go out, the output is
+#	closed and a temporary file renamed into place.
+proc ::replay::Finish {} {
+    variable R
+    flush $R(sink)
+    close $R(sink)
+    set R(sink) ""
+    Pass $R(held)
+    set R(held) ""
+    if {[catch {flush $R(out)} msg]} {Broken $msg}
+    if {$R(out) ne "stdout"} {
+        close $R(out)
+        set R(out) ""
+    }
+    if {$R(tmp) ne ""} {
+        if {$R(log) ne "" && [file exists $R(tmp).log]} {
+            file rename -force $R(tmp).log $R(log)
+        }
+        file rename -force $R(tmp) $R(target)
+        set R(tmp) ""
+    }
+    CloseGuard
+}
+
+# ::replay::LogFile --
+#	Returns <target>.log, the log file beside the file target path, or ""
+#	when that is the target itself; dies when it cannot be written.
+proc ::replay::LogFile {path} {
+    set log [file rootname $path].log
+    if {$log eq $path} {return ""}
+    if {[file exists $log] && ([file type $log] ne "file" || ![file writable $log])} {
+        Die "replay: -o $path: its log $log is not a writable file"
+    }
+    return $log
+}
+
+# ::replay::Cleanup --
+#	Ends a failed run: drops what the sink holds, closes the output and
+#	removes the temporary file; safe to call more than once.
+proc ::replay::Cleanup {} {
+    variable R
+    set R(discard) 1
+    set R(held) ""
+    if {$R(sink) ne ""} {
+        catch {close $R(sink)}
+        set R(sink) ""
+    }
+    if {$R(out) ne "" && $R(out) ne "stdout"} {
+        catch {close $R(out)}
+        set R(out) ""
+    }
+    if {$R(tmp) ne ""} {
+        catch {file delete -force $R(tmp) $R(tmp).log}
+        set R(tmp) ""
+    }
+    CloseGuard
+}
+
+# ::replay::CloseGuard -- Closes the guard's pipe (it then removes nothing or the leftover).
+proc ::replay::CloseGuard {} {
+    variable R
+    if {$R(guard) ne ""} {
+        catch {close $R(guard)}
+        set R(guard) ""
+    }
+}
+
 # ::replay::Listing -- Prints a listing line of the post on stderr (the summary is printed apart).
 proc ::replay::Listing {text} {
-    if {![string match "fivax summary:*" $text]} {puts stderr $text}
+    if {![string match "fivax summary:*" $text]} {Say $text}
+}
+
+# ::replay::Tick --
+#	The CL reader's progress command (records read, line, bytes read):
+#	shows the progress line when R(progressMs) has passed since the last.
+proc ::replay::Tick {records line bytes} {
+    variable R
+    variable progressMs
+    set now [clock milliseconds]
+    if {$now - $R(last) < $progressMs} return
+    set R(last) $now
+    ShowProgress [ProgressText $records $bytes $R(size) [expr {$now - $R(start)}]]
+}
+
+# ::replay::ProgressText --
+#	Returns the progress line for records read, bytes of size read (size
+#	"" when unknown) after ms milliseconds: records, percent, rate, time left.
+proc ::replay::ProgressText {records bytes size ms} {
+    set s [expr {max($ms, 1) / 1000.0}]
+    set text [format "fivax: %d records" $records]
+    if {$size ne "" && $size > 0 && $bytes ne ""} {
+        set frac [expr {min(1.0, double($bytes) / $size)}]
+        append text [format ", %d%%" [expr {int($frac * 100)}]]
+    }
+    append text [format ", %d records/s" [expr {round($records / $s)}]]
+    if {[info exists frac] && $frac > 0} {
+        set left [expr {round($s * (1.0 - $frac) / $frac)}]
+        append text [format ", %d:%02d left" [expr {$left / 60}] [expr {$left % 60}]]
+    }
+    return $text
+}
+
+# ::replay::ShowProgress -- Writes text over the progress line on stderr.
+proc ::replay::ShowProgress {text} {
+    variable R
+    set pad [expr {max(0, $R(shown) - [string length $text])}]
+    catch {
+        puts -nonewline stderr "\r$text[string repeat " " $pad]"
+        flush stderr
+    }
+    set R(shown) [string length $text]
+}
+
+# ::replay::ClearProgress -- Removes the progress line from stderr, if shown.
+proc ::replay::ClearProgress {} {
+    variable R
+    if {!$R(shown)} return
+    catch {
+        puts -nonewline stderr "\r[string repeat " " $R(shown)]\r"
+        flush stderr
+    }
+    set R(shown) 0
+}
+
+# ::replay::Terminal -- Returns 1 when chan is a terminal (it has the serial -mode option).
+proc ::replay::Terminal {chan} {
+    expr {![catch {chan configure $chan -mode}]}
 }
 
 # ::replay::Post --
 #	Runs the post on clsf with the job settings, writing NC text to
-#	channel chan. Returns the runtime statistics merged with the post's
-#	summary.
+#	channel chan; out is the output file as NX names it to the post (""
+#	for a stream). Returns the runtime statistics merged with the post's
+#	summary. An error that names no place gets the current CL record's
+#	FILE:LINE; one that is no fivax error is marked internal.
 proc ::replay::Post {settings clsf chan out} {
-    variable ::root
+    variable root
     set globals [dict create fivax_settings $settings]
     if {$out ne ""} {
-        # the output file as NX names it to the post
-        set out [file normalize $out]
         dict set globals mom_output_file_full_name $out
         dict set globals mom_output_file_directory [file dirname $out]
         dict set globals mom_output_file_basename [file rootname [file tail $out]]
@@ -82,6 +430,18 @@ proc ::replay::Post {settings clsf chan out} {
             set stats [dict merge $stats [$child eval {set ::fivax_summary}]]
         }
         return $stats
+    } on error {msg opts} {
+        set code [dict get $opts -errorcode]
+        if {[lindex $code 0] ne "FIVAX" && [lindex $code 0] ne "REPLAY"} {
+            set msg "internal error: $msg"
+        }
+        if {![regexp {^[^\n]*:\d+: } $msg]} {
+            set child [$rt interp]
+            if {[$child eval {info exists ::mom_cl_line}]} {
+                set msg "[$child eval {set ::mom_cl_file}]:[$child eval {set ::mom_cl_line}]: $msg"
+            }
+        }
+        return -code error -errorcode $code $msg
     } finally {
         $rt destroy
     }
@@ -90,75 +450,85 @@ proc ::replay::Post {settings clsf chan out} {
 # ::replay::Summary -- Prints the run's figures on standard error.
 proc ::replay::Summary {stats} {
     dict with stats {}
-    puts stderr [format "fivax: %d records read, %d blocks written, %d warnings" \
+    Say [format "fivax: %d records read, %d blocks written, %d warnings" \
         $records $blocks $warnings]
     if {[info exists checked]} {
-        puts stderr [format "fivax: %d CL points checked by forward kinematics: max deviation %.6f mm, %.6f deg" \
+        Say [format "fivax: %d CL points checked by forward kinematics: max deviation %.6f mm, %.6f deg" \
             $checked $maxPos $maxAng]
-        puts stderr [format "fivax: %d cutting moves checked at quarter points: max deviation %.6f mm, %.6f deg; %d rotary values outside limits" \
+        Say [format "fivax: %d cutting moves checked at quarter points: max deviation %.6f mm, %.6f deg; %d rotary values outside limits" \
             $segments $maxMidPos $maxMidAng $limitViolations]
     }
     if {[info exists inserted]} {
-        puts stderr [format "fivax: %d points inserted, %d retracts, rotary travel %.3f deg; %d azimuth holds, %d singular swings, %d moves left out of tolerance" \
+        Say [format "fivax: %d points inserted, %d retracts, rotary travel %.3f deg; %d azimuth holds, %d singular swings, %d moves left out of tolerance" \
             $inserted $retracts $travel $holds $swings $unresolved]
-        puts stderr [format "fivax: %d tool changes; %d dwell swings (rotaries turning %.3f deg with the tip in place); %d inverse-time feeds clamped at the machine's maximum (worst %.2f times slower than programmed)" \
+        Say [format "fivax: %d tool changes; %d dwell swings (rotaries turning %.3f deg with the tip in place); %d inverse-time feeds clamped at the machine's maximum (worst %.2f times slower than programmed)" \
             $toolChanges $dwells $dwellTurn $clamps $slowdown]
     }
 }
 
-# ::replay::main -- Parses argv, posts the file, and renames the output into place.
+# ::replay::main --
+#	Checks the command line, the machine file and the output path, posts
+#	the file through the sink, and puts the output in place.
 proc ::replay::main {argv} {
-    variable ::root
+    variable root
+    variable R
+    variable bufferSize
+    Reset
     lassign [ParseArgs $argv] opts clsf
     set settings [dict filter $opts key {*}[::fivax::opts names [::fivax::settings table]]]
-    set machine [dict get $settings -machine]
-    if {$machine eq ""} {
-        set machine [file join $root machines hh-tilt45.tcl]
-        dict set settings -machine $machine
+    if {[dict get $settings -machine] eq ""} {
+        dict set settings -machine [file join $root machines hh-tilt45.tcl]
     }
-    if {![file readable $machine]} {Die "$machine: machine file not found"}
-    if {$clsf ne "-" && ![file readable $clsf]} {Die "$clsf: cannot read CL file"}
-    puts stderr "fivax: posting for machine [file normalize $machine]"
-    set out [dict get $opts -o]
-    if {$out ne "" && [file isdirectory $out]} {Die "replay: -o $out: is a directory"}
-    set dir [expr {$out eq "" ? [pwd] : [file dirname [file normalize $out]]}]
-    set tmp [file join $dir .fivax-[pid]-[clock clicks].tmp]
-    try {
-        set chan [open $tmp w]
-    } trap {POSIX} {msg} {
-        Die "replay: cannot write [expr {$out eq "" ? "in [pwd]" : $out}]: [lindex [split $msg :] end]"
+    set machineFile [dict get $settings -machine]
+    CheckInput $clsf
+    CheckMachine $settings
+    set target ""
+    if {[dict get $opts -o] ni {"" -}} {
+        set target [CheckTarget -o [dict get $opts -o] $clsf $machineFile]
     }
-    fconfigure $chan -translation lf -encoding utf-8
-    # the post's log (warnings, retracts, errors) goes beside the NC file
-    # under the same rule: a temporary name, kept only when the run succeeds
+    if {[dict get $settings -log] ne ""} {
+        CheckTarget -log [dict get $settings -log] $clsf $machineFile
+    }
+    Say "fivax: posting for machine [file normalize $machineFile]"
+    if {![dict get $opts -quiet] && [Terminal stderr]} {
+        ::fivax::clsf::progress ::replay::Tick
+    }
+    set R(start) [clock milliseconds]
+    set R(last) $R(start)
+    if {$clsf ne "-" && [file isfile $clsf]} {set R(size) [file size $clsf]}
+    # the post's log beside a file target: a temporary name, kept only when
+    # the run succeeds
     set log ""
-    if {$out ne "" && [dict get $settings -log] eq ""} {
-        set log [file rootname [file normalize $out]].log
-        dict set settings -log $tmp.log
+    if {[lindex $target 0] eq "file" && [dict get $settings -log] eq ""} {
+        set log [LogFile [lindex $target 1]]
     }
+    OpenTarget $target $log
+    if {$log ne ""} {dict set settings -log $R(tmp).log}
+    set out [expr {[lindex $target 0] eq "file" ? [file normalize [dict get $opts -o]] : ""}]
+    set R(sink) [chan create write ::replay::Sink]
+    chan configure $R(sink) -translation lf -encoding utf-8 -buffering full \
+        -buffersize $bufferSize
     try {
-        set stats [Post $settings $clsf $chan $out]
-        close $chan
+        set stats [Post $settings $clsf $R(sink) $out]
         if {[dict exists $stats limitViolations] && [dict get $stats limitViolations] > 0} {
-            # A safety net: the planner never writes such a value.
-            error "[dict get $stats limitViolations] rotary values outside the machine's limits; no NC file written"
+            # A safety net: the checker refuses such a value when it is written.
+            error "[dict get $stats limitViolations] values outside the machine's limits; no NC file written"
         }
+        Finish
     } on error {msg} {
-        if {$chan in [chan names]} {close $chan}
-        file delete -force $tmp $tmp.log
+        if {$R(broken) ne ""} {
+            Die "replay: the output was closed before the end of the program ($R(broken)); stopped"
+        }
         Die $msg
     }
-    if {$log ne "" && [file exists $tmp.log]} {file rename -force $tmp.log $log}
-    if {$out eq ""} {
-        set in [open $tmp r]
-        fconfigure stdout -translation lf
-        fcopy $in stdout
-        close $in
-        file delete $tmp
-    } else {
-        file rename -force $tmp $out
+    ::fivax::clsf::progress ""
+    ClearProgress
+    if {[dict get $stats records] == 0} {
+        Say "fivax: warning: [expr {$clsf eq "-" ? "<stdin>" : $clsf}]: no CL records (empty file): the program has no motion"
     }
     if {![dict get $opts -quiet]} {Summary $stats}
 }
 
-::replay::main $argv
+if {[info exists ::argv0] && [file normalize $::argv0] eq [file normalize [info script]]} {
+    ::replay::main $argv
+}

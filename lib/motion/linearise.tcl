@@ -15,13 +15,22 @@ oo::define ::fivax::motion::Planner {
     # of the great circle of their actual axes (act), checked at the
     # quarter points. An error e splits the move into about sqrt(e / tol)
     # pieces (the error of a smooth move shrinks with the square of its
-    # length), each checked in turn, at most maxDepth levels deep. Where
-    # the CL path between a and b runs out of the limits (a piece no
-    # cutting move can do, see Cost), it is halved instead, and the piece
-    # left at the deepest level gets the flag retract.
+    # length), each checked in turn, at most maxDepth levels deep and into
+    # at most maxPieces pieces in all (a move of absurd length would
+    # otherwise take 16^maxDepth of them). Where the CL path between a and
+    # b runs out of the limits (a piece no cutting move can do, see Cost),
+    # it is halved instead, and the piece left at the deepest level gets
+    # the flag retract. Refused with src: a move whose CL axes are
+    # opposite (no great circle between them), and, before it is split, a
+    # move ending outside the machine's travel.
     method Linearise {a b depth src} {
-        namespace upvar ::fivax::motion maxDepth maxDepth retractCost retractCost
+        namespace upvar ::fivax::motion maxDepth maxDepth maxPieces maxPieces \
+            retractCost retractCost
         if {$S(tol) <= 0} {return [list $b]}
+        if {$depth == 0} {
+            ::fivax::motion::CheckFlip [lindex $a 2] [lindex $b 2] $src
+            set S(pieces) 0
+        }
         set ctx $S(ctx)
         lassign $a ja Pa - acta la
         lassign $b jb Pb - actb lb
@@ -46,7 +55,12 @@ oo::define ::fivax::motion::Planner {
             set n [expr {int(ceil(1.1 * sqrt($e)))}]
             set n [expr {$n < 2 ? 2 : $n > 16 ? 16 : $n}]
         }
-        if {$depth < $maxDepth} {
+        if {$depth == 0} {
+            lassign $jb X Y Z
+            ::fivax::machine::checkLimits $S(machine) [list X $X Y $Y Z $Z] $src
+        }
+        if {$depth < $maxDepth && $S(pieces) < $maxPieces} {
+            incr S(pieces) $n
             try {
                 set pts [::fivax::motion::Split $ctx $a $b $n $src]
                 lappend pts $b
@@ -68,6 +82,20 @@ oo::define ::fivax::motion::Planner {
         }
         list [lappend b retract]
     }
+}
+
+# ::fivax::motion::CheckFlip --
+#	Raises {FIVAX MOTION FLIP} naming src when the unit CL axes ta and tb
+#	of a cutting move are opposite (within flipSlack): the axis could turn
+#	from one to the other about any great circle, so the CL path between
+#	them is undefined.
+proc ::fivax::motion::CheckFlip {ta tb src} {
+    variable pi
+    variable flipSlack
+    if {[::fivax::vec::angle $ta $tb] <= $pi - $flipSlack} return
+    ::fivax::Fail MOTION FLIP "$src: the tool axis turns 180 deg in one cutting move\
+        (([AxisText $ta]) to ([AxisText $tb])): the way it turns is undefined;\
+        add a CL point between them"
 }
 
 # ::fivax::motion::Split --

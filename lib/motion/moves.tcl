@@ -58,11 +58,16 @@ oo::define ::fivax::motion::Planner {
     # {X Y Z q1 q2}, writing the axes in write (X Y Z, and R for both
     # rotaries); feed is {mode feed rate tip} or {} for rapids.
     # X Y Z are those of the output frame (see Out); in a work plane no
-    # rotary is written.
+    # rotary is written, and as the written X Y Z are no machine values
+    # there (the checker reads only those), the machine position is
+    # checked against the travel here: {FIVAX MACHINE LIMIT} naming src.
     method Move {kind joints write P t feed src {tag ""} {note ""}} {
         set n1 $S(n1)
         set n2 $S(n2)
-        lassign $joints - - - q1 q2
+        lassign $joints mX mY mZ q1 q2
+        if {$S(plane) ne ""} {
+            ::fivax::machine::checkLimits $S(machine) [list X $mX Y $mY Z $mZ] $src
+        }
         lassign [my Out $joints] X Y Z
         set i [lsearch -exact $write R]
         if {$i >= 0} {

@@ -48,8 +48,14 @@ namespace eval ::fivax::motion {
     # preference, and per radian away from zero (smallest values first).
     variable preferCost 1e-6
     variable zeroCost 1e-9
-    # Linearisation splits a cutting move at most this many levels deep.
+    # Linearisation splits a cutting move at most this many levels deep,
+    # into at most about maxPieces pieces (a full turn of a rotary 500 mm
+    # from the tip at the default tolerance takes about 500).
     variable maxDepth 12
+    variable maxPieces 10000
+    # CL axes of a cutting move within this angle (rad) of opposite ones
+    # have no defined great circle between them (see CheckFlip).
+    variable flipSlack 1e-6
     # The planner's options (see ::fivax::opts).
     variable Options {
         {-table-offset {maybe vec3} {} "X Y Z"
