@@ -15,6 +15,10 @@ controller  heidenhain
 tcp         1
 pivot       265
 tool_length 0
+# Linear travel of X Y Z (machine coordinates, mm): example values, wide
+# enough for the samples and the real CL files; set your machine's. A value
+# outside is refused with FILE:LINE, never written.
+travel      {X {-3000 3000} Y {-3000 3000} Z {-2000 2000}}
 axes {
     B {side head direction {0 0.70710678118654757 0.70710678118654757} point {0 0 0}
        sense 1 min -15 max 180 prefer none}

@@ -10,6 +10,10 @@ description {DMU 70 V style: 45 deg nutating B table, C table, Sinumerik 840D}
 units       mm
 family      chain
 controller  sinumerik
+# Linear travel of X Y Z (machine coordinates, mm): example values, wide
+# enough for the samples and the real CL files; set your machine's. A value
+# outside is refused with FILE:LINE, never written.
+travel      {X {-3000 3000} Y {-3000 3000} Z {-2000 2000}}
 axes {
     B {side table direction {0 0.70710678118654757 0.70710678118654757}
        point {0 0 -100} sense 1 min 0 max 180}
