@@ -251,8 +251,6 @@ oo::class create ::fivax::mom::Runtime {
             scale 1.0 clUnit MM outUnit MM unitsSeen 0 firstUnit MM nurbs {}
         }
         set S(nc) [::fivax::nc::create -sequence 0]
-        # the NC text goes out in large writes
-        if {$S(channel) ne ""} {chan configure $S(channel) -buffering full -buffersize 1048576}
         if {$S(def) ne ""} {
             set S(defDict) [::fivax::def::load $S(def)]
             ::fivax::def::configure $S(nc) $S(defDict)
