@@ -317,3 +317,31 @@ proc verifyReplayOutput {argList} {
         {*}$vargs [dict get $opts -o] 2>@1} out]
     list $code [regsub {\n?child process exited abnormally$} $out ""]
 }
+
+# testRotation --
+#	Returns the 3x3 rotation (rows) about axis x, y or z by deg degrees,
+#	written here, independently of lib/plane.tcl, to check its angles.
+proc testRotation {axis deg} {
+    set a [expr {$deg * acos(-1) / 180.0}]
+    set c [expr {cos($a)}]
+    set s [expr {sin($a)}]
+    switch -- $axis {
+        x {list {1.0 0.0 0.0} [list 0.0 $c [expr {-$s}]] [list 0.0 $s $c]}
+        y {list [list $c 0.0 $s] {0.0 1.0 0.0} [list [expr {-$s}] 0.0 $c]}
+        z {list [list $c [expr {-$s}] 0.0] [list $s $c 0.0] {0.0 0.0 1.0}}
+    }
+}
+
+# testProduct -- Returns the product of the 3x3 matrices given, left to right.
+proc testProduct {args} {
+    set R {{1.0 0.0 0.0} {0.0 1.0 0.0} {0.0 0.0 1.0}}
+    foreach B $args {
+        set R [lmap row $R {
+            lmap j {0 1 2} {
+                expr {[lindex $row 0] * [lindex $B 0 $j] + [lindex $row 1] * [lindex $B 1 $j]
+                    + [lindex $row 2] * [lindex $B 2 $j]}
+            }
+        }]
+    }
+    return $R
+}
