@@ -20,7 +20,12 @@ proc ::fivax::num::parse {tok} {
     set tok [string trim $tok]
     if {[scan $tok %lf%c v junk] != 1} {return ""}
     if {!(abs($v) < Inf)} {return ""}
-    if {![regexp {^[-+]?(\d+\.?\d*|\.\d+)([eE][-+]?\d+)?$} $tok]} {return ""}
+    # scan reads nothing but decimal syntax from the characters 0-9 . e E +
+    # - (it stops at the x of 0x10); any other character gets the pattern
+    if {[string trim $tok 0123456789.eE+-] ne ""
+            && ![regexp {^[-+]?(\d+\.?\d*|\.\d+)([eE][-+]?\d+)?$} $tok]} {
+        return ""
+    }
     return [expr {double($v)}]
 }
 

@@ -156,6 +156,19 @@ oo::class create ::fivax::verify::Checker {
         set S(tcpCodes) [dict get $machine tcp_codes]
         set S(rollover) [lmap axis $chain {dict get $axis rollover}]
         set S(limits) [lmap name $S(names) {dict get $machine limits $name}]
+        # axis:NAME -> the rotary's index in the chain
+        foreach name $S(names) i {0 1} {set S(axis:$name) $i}
+        # X Y Z travel with the slack of machine outside: lo hi per axis
+        set S(travel) {}
+        foreach axis {X Y Z} {
+            if {[dict exists $machine limits $axis]} {
+                lassign [dict get $machine limits $axis] lo hi
+                lappend S(travel) [expr {$lo - $::fivax::machine::limitSlack}] \
+                    [expr {$hi + $::fivax::machine::limitSlack}]
+            } else {
+                lappend S(travel) -Inf Inf
+            }
+        }
         array set S {X {} Y {} Z {} q1 {} q2 {} motion {} mode direct F {} prev {}
             cycle 0 return 98 initial {} bottom {} R {} tcp 0 frame {} plane 17 cc {}
             checked 0 segments 0 maxPos 0.0 maxAng 0.0 maxMidPos 0.0 maxMidAng 0.0
@@ -212,17 +225,11 @@ oo::class create ::fivax::verify::Checker {
             }
             regsub -all -- $cre $text "" text
         }
-        set out [dict create block 0 motion $S(motion) moved {} joints {} pose {} \
-            space [my Space] arc {} mode $S(mode) F "" feed $S(F) words {} comments $comments \
-            limit {} unknown {} hole 0]
         # a line of plain words (every block fivax writes) is split at its spaces
         set plain [expr {$S(lineRe) ne "" && [regexp -- $S(lineRe) $text]}]
         if {(!$plain && [string trim $text] eq "") || [regexp -- [dict get $S(dialect) skip] $line]} {
-            dict set out joints [my Joints]
-            dict set out pose [my Pose]
-            return $out
+            return [my Still 0 $comments [my Joints] [my Pose]]
         }
-        dict set out block 1
         set unknown {}
         if {$plain} {
             set words [split $text " "]
@@ -235,6 +242,7 @@ oo::class create ::fivax::verify::Checker {
         set pairs {}
         set moved {}
         set limit {}
+        set F ""
         # G codes first: they decide what the axis words mean
         set machineFrame 0
         set planeSet 0
@@ -262,13 +270,14 @@ oo::class create ::fivax::verify::Checker {
             }
         }
         if {$planeSet} {
-            return [my PlaneWords $out $words]
+            return [my PlaneWords [my Still 1 $comments {} {}] $words]
         }
         set hole 0
         set start [list $S(X) $S(Y) $S(Z)]
         set ijk {I 0.0 J 0.0 K 0.0}
         set radius ""
         set centreGiven 0
+        set arcMode [expr {$S(motion) in {2 3}}]
         foreach word $words {
             set letter [string index $word 0]
             set x [string range $word 1 end]
@@ -277,29 +286,48 @@ oo::class create ::fivax::verify::Checker {
                 continue
             }
             lappend pairs $letter $x
-            if {$letter in {X Y Z}} {
-                if {$machineFrame} {
-                    set S($letter) ""
-                } elseif {$S(cycle) && $letter eq "Z"} {
-                    # in a canned cycle Z is the hole's bottom
-                    set S(bottom) $x
-                } else {
-                    set S($letter) $x
+            # the letters with a meaning of their own first (their order
+            # decides where a rotary's name is also one of them)
+            switch -exact -- $letter {
+                X - Y - Z {
+                    if {$machineFrame} {
+                        set S($letter) ""
+                    } elseif {$S(cycle) && $letter eq "Z"} {
+                        # in a canned cycle Z is the hole's bottom
+                        set S(bottom) $x
+                    } else {
+                        set S($letter) $x
+                    }
+                    if {$S(cycle)} {set hole 1}
+                    lappend moved $letter
+                    continue
                 }
-                if {$S(cycle)} {set hole 1}
-                lappend moved $letter
-            } elseif {$letter eq "R" && $S(cycle)} {
-                set S(R) $x
-                set hole 1
-            } elseif {$letter eq "Q" && $S(cycle)} {
-                # the peck depth: the hole ends at its bottom all the same
-            } elseif {$letter in {I J K} && $S(motion) in {2 3}} {
-                dict set ijk $letter $x
-                set centreGiven 1
-            } elseif {$letter eq "R" && $S(motion) in {2 3}} {
-                set radius $x
-                set centreGiven 1
-            } elseif {[set i [lsearch -exact $S(names) $letter]] >= 0} {
+                R {
+                    if {$S(cycle)} {
+                        set S(R) $x
+                        set hole 1
+                        continue
+                    }
+                    if {$arcMode} {
+                        set radius $x
+                        set centreGiven 1
+                        continue
+                    }
+                }
+                Q {
+                    # the peck depth: the hole ends at its bottom all the same
+                    if {$S(cycle)} continue
+                }
+                I - J - K {
+                    if {$arcMode} {
+                        dict set ijk $letter $x
+                        set centreGiven 1
+                        continue
+                    }
+                }
+            }
+            if {[info exists S(axis:$letter)]} {
+                set i $S(axis:$letter)
                 set q [::fivax::num::rad $x]
                 lassign [lindex $S(limits) $i] min max
                 if {$q < $min - 1e-9 || $q > $max + 1e-9} {
@@ -308,36 +336,49 @@ oo::class create ::fivax::verify::Checker {
                 }
                 set S(q[expr {$i + 1}]) $q
                 lappend moved $letter
-            } elseif {$letter eq "G"} {
-                set g [expr {$x == round($x) ? int($x) : $x}]
-                switch -exact -- $g {
-                    0 {set S(motion) 0}
-                    1 {set S(motion) 1}
-                    2 - 3 {set S(motion) $g}
-                    17 - 18 - 19 {set S(plane) $g}
-                    43.4 {set S(tcp) 1}
-                    49 {set S(tcp) 0}
-                    69 {set S(frame) {}}
-                    93 {set S(mode) inverse}
-                    94 {set S(mode) direct}
-                    default {
-                        if {$g ni $::fivax::verify::KnownG} {lappend unknown G$g $word}
+                continue
+            }
+            switch -exact -- $letter {
+                G {
+                    set g [expr {$x == round($x) ? int($x) : $x}]
+                    switch -exact -- $g {
+                        0 {set S(motion) 0}
+                        1 {set S(motion) 1}
+                        2 - 3 {set S(motion) $g}
+                        17 - 18 - 19 {set S(plane) $g}
+                        43.4 {set S(tcp) 1}
+                        49 {set S(tcp) 0}
+                        69 {set S(frame) {}}
+                        93 {set S(mode) inverse}
+                        94 {set S(mode) direct}
+                        default {
+                            if {$g ni $::fivax::verify::KnownG} {lappend unknown G$g $word}
+                        }
+                    }
+                    set arcMode [expr {$S(motion) in {2 3}}]
+                }
+                F {
+                    # (G4 F: a Sinumerik dwell time, no feed)
+                    if {!$dwell} {
+                        set S(F) $x
+                        set F $x
                     }
                 }
-            } elseif {$letter eq "F"} {
-                # (G4 F: a Sinumerik dwell time, no feed)
-                if {!$dwell} {
-                    set S(F) $x
-                    dict set out F $x
+                M {
+                    if {[llength $S(tcpCodes)]
+                            && [set k [lsearch -exact $S(tcpCodes) [expr {int($x)}]]] >= 0} {
+                        set S(tcp) [expr {$k == 0}]
+                    }
                 }
-            } elseif {$letter eq "M" && [llength $S(tcpCodes)]
-                    && [set k [lsearch -exact $S(tcpCodes) [expr {int($x)}]]] >= 0} {
-                set S(tcp) [expr {$k == 0}]
-            } elseif {$letter ni $::fivax::verify::KnownLetters} {
-                lappend unknown "letter $letter" $word
+                default {
+                    if {$letter ni $::fivax::verify::KnownLetters} {
+                        lappend unknown "letter $letter" $word
+                    }
+                }
             }
         }
-        if {$S(motion) in {2 3} && [llength $moved]} {
+        set arc {}
+        if {$arcMode && [llength $moved]} {
             if {!$centreGiven} {lappend unknown "arc without I J K or R" G$S(motion)}
             if {$radius ne ""} {
                 set centre [::fivax::verify::RadiusCentre $start [list $S(X) $S(Y) $S(Z)] \
@@ -348,29 +389,30 @@ oo::class create ::fivax::verify::Checker {
                     expr {$c eq "" ? "" : $c + $d}
                 }]
             }
-            dict set out arc [list $start $centre $S(plane) $S(motion)]
+            set arc [list $start $centre $S(plane) $S(motion)]
         }
-        dict set out motion $S(motion)
-        dict set out space [my Space]
-        dict set out mode $S(mode)
-        dict set out feed $S(F)
-        dict set out moved $moved
-        dict set out words $pairs
-        dict set out limit $limit
-        dict set out unknown $unknown
-        dict set out hole $hole
         if {$hole} {
             set z $S(Z)
             set S(Z) $S(bottom)
-            dict set out joints [my Joints]
-            dict set out pose [my Pose]
+            set joints [my Joints]
+            set pose [my Pose]
             # back to the initial level (G98) or the R plane (G99)
             set S(Z) [expr {$S(return) == 99 ? $S(R) : $z}]
         } else {
-            dict set out joints [my Joints]
-            dict set out pose [my Pose]
+            set joints [my Joints]
+            set pose [my Pose]
         }
-        return $out
+        dict create block 1 motion $S(motion) moved $moved joints $joints pose $pose \
+            space [my Space] arc $arc mode $S(mode) F $F feed $S(F) words $pairs \
+            comments $comments limit $limit unknown $unknown hole $hole
+    }
+
+    # Returns the dict of read (see there) for a line that moves nothing:
+    # block (0 or 1), comments, joints and pose as given.
+    method Still {block comments joints pose} {
+        dict create block $block motion $S(motion) moved {} joints $joints pose $pose \
+            space [my Space] arc {} mode $S(mode) F "" feed $S(F) words {} \
+            comments $comments limit {} unknown {} hole 0
     }
 
     # Returns the space of X Y Z now: plane, tcp or joint.
@@ -595,6 +637,14 @@ oo::class create ::fivax::verify::Checker {
     # checkLimits) when the block read as blk leaves the machine's X Y Z
     # travel (its machine X Y Z, when known) or a rotary's limits.
     method CheckLimits {blk line move} {
+        if {![llength [dict get $blk limit]]} {
+            # the usual case first: no rotary outside and X Y Z within
+            set joints [dict get $blk joints]
+            if {$joints eq ""} return
+            lassign $joints X Y Z
+            lassign $S(travel) xl xh yl yh zl zh
+            if {$X >= $xl && $X <= $xh && $Y >= $yl && $Y <= $yh && $Z >= $zl && $Z <= $zh} return
+        }
         set values {}
         set joints [dict get $blk joints]
         if {$joints ne ""} {

@@ -172,8 +172,8 @@ proc ::bench::NoCheck {words} {
         [$rt interp] eval {oo::define ::fivax::verify::Checker method block {line move} {}}
         return $rt
     }
-    set ::argv $words
     uplevel #0 [list source [file join $root tools replay.tcl]]
+    ::replay::main $words
 }
 
 # ::bench::Mb -- Returns megabytes mb printed for the table.

@@ -159,9 +159,10 @@ oo::define ::fivax::motion::Planner {
                 lappend moves {*}[my Retract $prev $p $f $src \
                     [::fivax::motion::LimitReason $S(ctx) $a1 $a2 $t]]
             } else {
-                lappend moves [my Move feed $joints {X Y Z R} $P $t [my FeedOf $prev $p $f] $src \
+                set feedOf [my FeedOf $prev $p $f]
+                lappend moves [my Move feed $joints {X Y Z R} $P $t $feedOf $src \
                     [expr {$i < $last ? "inserted" : ""}]]
-                my CountDwell $prev $p
+                my CountDwell $prev $p [lindex $feedOf 3]
             }
             set prev $p
             incr i
@@ -189,14 +190,15 @@ oo::define ::fivax::motion::Planner {
         }
     }
 
-    # Counts a dwell swing: a cutting move from point record a to b that
-    # only turns the rotaries while the tip stays put (at the singular
-    # direction, where the path leaves the pole with another azimuth).
-    method CountDwell {a b} {
+    # Counts a dwell swing: a cutting move from point record a to b (tip
+    # path length d, mm) that only turns the rotaries while the tip stays
+    # put (at the singular direction, where the path leaves the pole with
+    # another azimuth).
+    method CountDwell {a b d} {
         lassign [lindex $a 0] - - - a1 a2
         lassign [lindex $b 0] - - - b1 b2
         set turn [expr {abs($b1 - $a1) + abs($b2 - $a2)}]
-        if {$turn > 1e-9 && [::fivax::vec::dist [lindex $b 1] [lindex $a 1]] < 1e-9} {
+        if {$turn > 1e-9 && $d < 1e-9} {
             incr S(dwells)
             set S(dwellTurn) [expr {$S(dwellTurn) + $turn}]
         }
