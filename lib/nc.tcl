@@ -272,6 +272,18 @@ oo::class create ::fivax::nc::Writer {
         return
     }
 
+    # Returns number x within address name's MIN/MAX as a block would
+    # write it (truncated, or after a warning as it is; {FIVAX NC RANGE}
+    # for abort): for text that goes out without a block (Klartext).
+    method limit {name x} {
+        if {![info exists Addr($name)]} {
+            ::fivax::Fail NC ADDRESS "unknown address \"$name\""
+        }
+        set limits [lindex $Addr($name) 5]
+        if {$limits eq ""} {return $x}
+        my Bound $name $x $limits
+    }
+
     # Returns the last value written for address name ("" if none).
     method value {name} {
         if {![info exists Val($name)]} {

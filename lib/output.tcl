@@ -399,6 +399,8 @@ oo::class create ::fivax::output::Writer {
         set m [expr {$direction eq "CCLW" ? 4 : 3}]
         set speed [expr {round($speed)}]
         if {[dict get $dialect syntax] eq "klartext"} {
+            # the S of TOOL CALL is text: the .def's MIN/MAX of S bound it here
+            set speed [expr {round([$nc limit S $speed])}]
             set call [expr {$pendingTool ne "" ? "TOOL CALL $pendingTool Z" : "TOOL CALL Z"}]
             set pendingTool ""
             return [concat [list [$nc line "$call S$speed"]] [my KlartextM [list M_spindle $m]]]
@@ -437,8 +439,9 @@ oo::class create ::fivax::output::Writer {
     # unit; Klartext cycle 9).
     method dwell {seconds} {
         if {[dict get $dialect dwell] eq "cycl9"} {
+            # the time is text: bounded by the MIN/MAX of the seconds address P_s
             return [list [$nc line "CYCL DEF 9.0 DWELL TIME"] \
-                [$nc line "CYCL DEF 9.1 DWELL [::fivax::num::fixed $seconds 3]"]]
+                [$nc line "CYCL DEF 9.1 DWELL [::fivax::num::fixed [$nc limit P_s $seconds] 3]"]]
         }
         concat [my CycleOff] [list [$nc block [concat {G_dwell 4} [my DwellWords $seconds]]]]
     }
