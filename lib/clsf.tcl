@@ -479,14 +479,15 @@ proc ::fivax::clsf::Axis {i j k file line major label} {
 
 # ::fivax::clsf::Words --
 #	Returns a flat list of {N double} / {W UPPERWORD} pairs for the tokens
-#	of rest. A token that starts like a number must be one (NUMBER).
+#	of rest. A token that starts like a number, or that Tcl reads as one
+#	(nan, Inf, 0x10), must be a decimal number (NUMBER).
 proc ::fivax::clsf::Words {rest file line major} {
     set out {}
     foreach t [Tokens $rest] {
         set v [::fivax::num::parse $t]
         if {$v ne ""} {
             lappend out N $v
-        } elseif {[string match {[-+.0-9]*} $t]} {
+        } elseif {[string match {[-+.0-9]*} $t] || [string is double -strict $t]} {
             BadNumber $t $file $line $major
         } else {
             lappend out W [string toupper $t]

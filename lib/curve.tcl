@@ -14,6 +14,10 @@ namespace eval ::fivax::curve {
     namespace export arc arcSplit arcLength nurbs nurbsAt nurbsPoints nurbsSamples clsfNurbs
     namespace ensemble create -prefixes 0
     namespace upvar ::fivax::num pi pi
+    # The largest size (mm) of a curve point's coordinates (arc points,
+    # NURBS control points): no machine reaches farther, and squared
+    # distances stay far from overflow (CL values go up to 1.8e308).
+    variable reach 1e9
 }
 
 # ::fivax::curve::arc --
@@ -68,8 +72,19 @@ proc ::fivax::curve::arcLength {start end center axis sense turns} {
 #	axial heights of start and end above center, their radii, the unit
 #	radial direction u of start, the total sweep (radians, > 0) and the
 #	sense; "" when start or end lies on the axis.
+#	Errors: {FIVAX CURVE REACH} for a point beyond reach (arc, arcSplit
+#	and arcLength raise it too).
 proc ::fivax::curve::ArcFrame {start end center axis sense turns} {
     variable pi
+    variable reach
+    foreach p [list $start $end $center] what {start end centre} {
+        foreach c $p {
+            if {!(abs($c) <= $reach)} {
+                ::fivax::Fail CURVE REACH "arc: its $what ([join [lmap c $p {format %g $c}] ,])\
+                    lies beyond [format %g $reach] mm of the origin"
+            }
+        }
+    }
     set n [::fivax::vec::unit $axis]
     set hs [::fivax::vec::dot [::fivax::vec::sub $start $center] $n]
     set he [::fivax::vec::dot [::fivax::vec::sub $end $center] $n]
@@ -147,9 +162,10 @@ proc ::fivax::curve::ArcPoint {frame f} {
 #	non-decreasing values; no value more than p+1 times, nor more than p
 #	times inside the domain, which must not be empty), n >= p+1 control
 #	points {x y z} and n weights > 0 ({} = all 1). Coordinates are at most
-#	1e9 in size, weights within [1e-6, 1e6].
+#	reach (1e9) in size, weights within [1e-6, 1e6].
 #	Errors {FIVAX CURVE DEGREE|KNOTS|POINTS|WEIGHTS} "nurbs: what".
 proc ::fivax::curve::nurbs {degree knots points {weights {}}} {
+    variable reach
     set p [::fivax::num::int $degree]
     if {$p eq "" || $p < 1 || $p > 32} {
         ::fivax::Fail CURVE DEGREE "nurbs: degree must be an integer from 1 to 32, got '$degree'"
@@ -164,7 +180,7 @@ proc ::fivax::curve::nurbs {degree knots points {weights {}}} {
         if {[llength $pt] != 3} {
             ::fivax::Fail CURVE POINTS "nurbs: point '$pt' is not three numbers"
         }
-        lappend pts [lmap c $pt {Real $c 1e9 POINTS "coordinate"}]
+        lappend pts [lmap c $pt {Real $c $reach POINTS "coordinate"}]
     }
     if {![llength $weights]} {
         set weights [lrepeat $n 1.0]

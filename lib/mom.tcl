@@ -726,18 +726,26 @@ oo::class create ::fivax::mom::Runtime {
         set mode [my PostVar [expr {$helix ? "mom_kin_helical_arc_output_mode"
             : "mom_kin_arc_output_mode"}] FULL_CIRCLE]
         my FeedGlobals $rec
+        try {
+            if {$mode eq "LINEAR"} {
+                set tol [expr {[dict exists $circle tolerance] && [dict get $circle tolerance] > 0
+                    ? [dict get $circle tolerance] : 0.002}]
+                set points [::fivax::curve::arc $start $end $center $axis $sense $times $tol]
+            } else {
+                set max [dict get {FULL_CIRCLE 360.0 QUADRANT 90.0 END_POINT Inf} $mode]
+                set pieces [::fivax::curve::arcSplit $start $end $center $axis $sense $times \
+                    [expr {$max * $pi / 180.0}]]
+            }
+        } trap {FIVAX CURVE} {msg} {
+            ::fivax::Fail MOM ARC "[::fivax::mom::Where $circle]: CIRCLE: $msg"
+        }
         if {$mode eq "LINEAR"} {
-            set tol [expr {[dict exists $circle tolerance] && [dict get $circle tolerance] > 0
-                ? [dict get $circle tolerance] : 0.002}]
-            foreach p [::fivax::curve::arc $start $end $center $axis $sense $times $tol] {
+            foreach p $points {
                 my SetPosition $p $S(axis)
                 my Move linear_move
             }
             return
         }
-        set max [dict get {FULL_CIRCLE 360.0 QUADRANT 90.0 END_POINT Inf} $mode]
-        set pieces [::fivax::curve::arcSplit $start $end $center $axis $sense $times \
-            [expr {$max * $pi / 180.0}]]
         set pairs [list mom_arc_radius [dict get $circle radius] \
             mom_arc_direction [expr {$sense < 0 ? "CLW" : "CCLW"}]]
         foreach key {tolerance intol tool_diameter tool_radius} {

@@ -7,8 +7,9 @@
 #	  posted   exit 0; every number in the NC text finite and inside the
 #	           machine's travel and rotary limits; one program of the
 #	           controller's dialect (one header, one end); no value a
-#	           control refuses (F0, S0, negative S T H); a DELAY written as
-#	           a dwell; every inserted unknown record word warned about;
+#	           control refuses (F0, S0, negative S T H, a number of 13
+#	           digits or more); a DELAY written as a dwell; every inserted
+#	           unknown record word warned about;
 #	           nothing but the NC file and its log in the case directory
 #	  refused  exit 1 and one line on stderr: "FILE:LINE: message" (CL
 #	           problems), "replay: ..." (command line, output) or
@@ -684,15 +685,24 @@ proc ::fuzz::CheckNc {c nc err} {
     if {[catch {fivax::machine load [dict get $c machine]} m]} {set m ""}
     if {![Inside $text $m]} {lappend classes limits}
     if {![OneProgram $code [Controller $c $m]]} {lappend classes lifecycle}
-    # values a control refuses (the F of a dwell is its time)
+    # values a control refuses (the F of a dwell is its time), and numbers
+    # of 13 digits or more in any line (no control reads them)
     set blocks [lsearch -all -inline -not -regexp $code {\mG0?4\M|CYCL DEF 9\.}]
-    if {[regexp {\m[FS][-+]?(0+\.?0*|\.0+)(\s|$)|\m[FSTHD]-} [join $blocks \n]]} {
+    if {[regexp {\m[FS][-+]?(0+\.?0*|\.0+)(\s|$)|\m[FSTHD]-} [join $blocks \n]]
+            || [regexp {[0-9]{13}} $text]} {
         lappend classes values
     }
-    # a DELAY of a positive time is written as a dwell
+    # a DELAY of a positive time is written as a dwell (unless the line
+    # before continues into it with a single trailing $: then it is part
+    # of that record, a comment say)
     set dwell 0
-    foreach {- t} [regexp -all -inline -line {^\s*DELAY\s*/\s*([0-9]*\.?[0-9]+)\s*$} $cl] {
-        if {$t > 0} {set dwell 1}
+    set continued 0
+    foreach l [split $cl \n] {
+        if {!$continued && [regexp {^\s*DELAY\s*/\s*([0-9]*\.?[0-9]+)\s*$} $l -> t] && $t > 0} {
+            set dwell 1
+        }
+        set l [string trimright $l]
+        set continued [expr {[string index $l end] eq "\$" && [string index $l end-1] ne "\$"}]
     }
     if {$dwell && ![regexp {\mG0?4\M|CYCL DEF 9\.} $text]} {
         lappend classes dwell
