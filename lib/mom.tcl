@@ -726,26 +726,18 @@ oo::class create ::fivax::mom::Runtime {
         set mode [my PostVar [expr {$helix ? "mom_kin_helical_arc_output_mode"
             : "mom_kin_arc_output_mode"}] FULL_CIRCLE]
         my FeedGlobals $rec
-        try {
-            if {$mode eq "LINEAR"} {
-                set tol [expr {[dict exists $circle tolerance] && [dict get $circle tolerance] > 0
-                    ? [dict get $circle tolerance] : 0.002}]
-                set points [::fivax::curve::arc $start $end $center $axis $sense $times $tol]
-            } else {
-                set max [dict get {FULL_CIRCLE 360.0 QUADRANT 90.0 END_POINT Inf} $mode]
-                set pieces [::fivax::curve::arcSplit $start $end $center $axis $sense $times \
-                    [expr {$max * $pi / 180.0}]]
-            }
-        } trap {FIVAX CURVE} {msg} {
-            ::fivax::Fail MOM ARC "[::fivax::mom::Where $circle]: CIRCLE: $msg"
-        }
         if {$mode eq "LINEAR"} {
-            foreach p $points {
+            set tol [expr {[dict exists $circle tolerance] && [dict get $circle tolerance] > 0
+                ? [dict get $circle tolerance] : 0.002}]
+            foreach p [my Curve $circle ARC CIRCLE arc $start $end $center $axis $sense $times $tol] {
                 my SetPosition $p $S(axis)
                 my Move linear_move
             }
             return
         }
+        set max [dict get {FULL_CIRCLE 360.0 QUADRANT 90.0 END_POINT Inf} $mode]
+        set pieces [my Curve $circle ARC CIRCLE arcSplit $start $end $center $axis $sense $times \
+            [expr {$max * $pi / 180.0}]]
         set pairs [list mom_arc_radius [dict get $circle radius] \
             mom_arc_direction [expr {$sense < 0 ? "CLW" : "CCLW"}]]
         foreach key {tolerance intol tool_diameter tool_radius} {
@@ -804,11 +796,8 @@ oo::class create ::fivax::mom::Runtime {
         if {$S(point) eq ""} {
             ::fivax::Fail MOM NURBS "[::fivax::mom::Where $rec]: NURBS: no position before the curve"
         }
-        try {
-            set curve [::fivax::curve::clsfNurbs $S(point) [dict get $data knots] [dict get $data cntrl]]
-        } trap {FIVAX CURVE} {msg} {
-            ::fivax::Fail MOM NURBS "[::fivax::mom::Where $rec]: NURBS: $msg"
-        }
+        set curve [my Curve $rec NURBS NURBS clsfNurbs $S(point) [dict get $data knots] \
+            [dict get $data cntrl]]
         my FeedGlobals $rec
         if {![my Has MOM_nurbs_move]} {
             foreach p [::fivax::curve::nurbsPoints $curve 0.002] {
@@ -832,6 +821,18 @@ oo::class create ::fivax::mom::Runtime {
         lappend S(ops) a mom_nurbs_points $pairs
         my SetPosition [lindex $points end] $S(axis)
         my Move nurbs_move
+    }
+
+    # Curve --
+    #	Returns the result of ::fivax::curve with args, its {FIVAX CURVE}
+    #	errors raised as {FIVAX MOM detail} "FILE:LINE: word: message" of
+    #	CL record rec (the CIRCLE or NURBS the curve comes from).
+    method Curve {rec detail word args} {
+        try {
+            ::fivax::curve {*}$args
+        } trap {FIVAX CURVE} {msg} {
+            ::fivax::Fail MOM $detail "[::fivax::mom::Where $rec]: $word: $msg"
+        }
     }
 
     # Pitch -- Returns the axial rise per turn of the arc piece from a to b sweeping sweep (rad).

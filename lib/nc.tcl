@@ -196,12 +196,7 @@ oo::class create ::fivax::nc::Writer {
                     if {$v eq ""} continue
                     set num 0
                 }
-                if {$num && $limits ne ""} {
-                    lassign $limits min - max
-                    if {($min ne "" && $x < $min) || ($max ne "" && $x > $max)} {
-                        set x [my Bound $name $x $limits]
-                    }
-                }
+                if {$num && $limits ne ""} {set x [my Bound $name $x $limits]}
                 if {!$num} {
                     set t $v
                 } elseif {!(abs($x) < Inf)} {

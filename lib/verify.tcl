@@ -158,17 +158,6 @@ oo::class create ::fivax::verify::Checker {
         set S(limits) [lmap name $S(names) {dict get $machine limits $name}]
         # axis:NAME -> the rotary's index in the chain
         foreach name $S(names) i {0 1} {set S(axis:$name) $i}
-        # X Y Z travel with the slack of machine outside: lo hi per axis
-        set S(travel) {}
-        foreach axis {X Y Z} {
-            if {[dict exists $machine limits $axis]} {
-                lassign [dict get $machine limits $axis] lo hi
-                lappend S(travel) [expr {$lo - $::fivax::machine::limitSlack}] \
-                    [expr {$hi + $::fivax::machine::limitSlack}]
-            } else {
-                lappend S(travel) -Inf Inf
-            }
-        }
         array set S {X {} Y {} Z {} q1 {} q2 {} motion {} mode direct F {} prev {}
             cycle 0 return 98 initial {} bottom {} R {} tcp 0 frame {} plane 17 cc {}
             checked 0 segments 0 maxPos 0.0 maxAng 0.0 maxMidPos 0.0 maxMidAng 0.0
@@ -637,18 +626,11 @@ oo::class create ::fivax::verify::Checker {
     # checkLimits) when the block read as blk leaves the machine's X Y Z
     # travel (its machine X Y Z, when known) or a rotary's limits.
     method CheckLimits {blk line move} {
-        if {![llength [dict get $blk limit]]} {
-            # the usual case first: no rotary outside and X Y Z within
-            set joints [dict get $blk joints]
-            if {$joints eq ""} return
-            lassign $joints X Y Z
-            lassign $S(travel) xl xh yl yh zl zh
-            if {$X >= $xl && $X <= $xh && $Y >= $yl && $Y <= $yh && $Z >= $zl && $Z <= $zh} return
-        }
         set values {}
         set joints [dict get $blk joints]
         if {$joints ne ""} {
-            foreach axis {X Y Z} v [lrange $joints 0 2] {dict set values $axis $v}
+            lassign $joints x y z
+            set values [list X $x Y $y Z $z]
         }
         foreach axis [dict get $blk limit] {
             dict set values $axis $S(q[expr {[lsearch -exact $S(names) $axis] + 1}])
