@@ -363,9 +363,13 @@ proc ::fivax::clsf::parse {text file line} {
     if {![string is wordchar $major]} {set major [regsub -all {\s+} $major " "]}
     switch -exact -- $major {
         GOTO - FROM - GOHOME {
-            # Fast path: plain NX tokens need no trimming.
+            set plain [string is graph $rest]
+            if {$plain} {
+                set rec [PlainGoto $major $rest $file $line]
+                if {[dict size $rec]} {return $rec}
+            }
             set toks [split $rest ,]
-            if {![string is graph $rest]} {
+            if {!$plain} {
                 set toks [lmap t $toks {string trim $t}]
             }
             set cnt [llength $toks]
@@ -419,6 +423,28 @@ proc ::fivax::clsf::parse {text file line} {
     }
 }
 
+# ::fivax::clsf::PlainGoto --
+#	The fast path of a GOTO, FROM or GOHOME whose rest has no white space
+#	(as NX writes it): returns its record when rest is exactly 3 or 6
+#	finite decimal numbers and the axis is a unit vector, else {} (parse
+#	then reads it token by token, with the errors). The numbers scan
+#	reads are those of num::parse (hex, binary, octal and nan stop it;
+#	Inf fails the finite test); %n proves nothing is left over.
+proc ::fivax::clsf::PlainGoto {major rest file line} {
+    set len [string length $rest]
+    if {[scan $rest %lf,%lf,%lf,%lf,%lf,%lf%n x y z i j k end] == 7} {
+        if {$end != $len || !(max(abs($x), abs($y), abs($z)) < Inf)} {return {}}
+        set axis [Unit $i $j $k]
+        if {$axis eq ""} {return {}}
+    } elseif {[scan $rest %lf,%lf,%lf%n x y z end] == 4} {
+        if {$end != $len || !(max(abs($x), abs($y), abs($z)) < Inf)} {return {}}
+        set axis {}
+    } else {
+        return {}
+    }
+    dict create kind $major file $file line $line point [list $x $y $z] axis $axis
+}
+
 # ::fivax::clsf::Tokens -- Returns the trimmed comma-separated tokens of rest.
 proc ::fivax::clsf::Tokens {rest} {
     if {[string trim $rest] eq ""} {return {}}
@@ -463,18 +489,25 @@ proc ::fivax::clsf::Nums {toks file line major} {
 #	Returns {i j k} from the tokens i j k, normalised; raises AXIS when the
 #	length differs from 1 by more than 1e-3 (label names it in the message).
 proc ::fivax::clsf::Axis {i j k file line major label} {
-    set u [Num $i $file $line $major]
-    set v [Num $j $file $line $major]
-    set w [Num $k $file $line $major]
-    set len [expr {sqrt($u * $u + $v * $v + $w * $w)}]
-    if {!(abs($len - 1.0) <= 1e-3)} {
+    set axis [Unit [Num $i $file $line $major] [Num $j $file $line $major] \
+        [Num $k $file $line $major]]
+    if {$axis eq ""} {
         ::fivax::Fail CLSF AXIS \
             "$file:$line: $major: $label ($i,$j,$k) is not a unit vector"
     }
+    return $axis
+}
+
+# ::fivax::clsf::Unit --
+#	Returns {u v w} normalised, or "" when its length differs from 1 by
+#	more than 1e-3 (or is not finite).
+proc ::fivax::clsf::Unit {u v w} {
+    set len [expr {sqrt($u * $u + $v * $v + $w * $w)}]
+    if {!(abs($len - 1.0) <= 1e-3)} {return ""}
     if {$len != 1.0} {
         return [list [expr {$u / $len}] [expr {$v / $len}] [expr {$w / $len}]]
     }
-    return [list $u $v $w]
+    list $u $v $w
 }
 
 # ::fivax::clsf::Words --
