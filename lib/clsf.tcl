@@ -433,11 +433,11 @@ proc ::fivax::clsf::parse {text file line} {
 proc ::fivax::clsf::PlainGoto {major rest file line} {
     set len [string length $rest]
     if {[scan $rest %lf,%lf,%lf,%lf,%lf,%lf%n x y z i j k end] == 7} {
-        if {$end != $len || !(max(abs($x), abs($y), abs($z)) < Inf)} {return {}}
+        if {$end != $len || !(abs($x) < Inf && abs($y) < Inf && abs($z) < Inf)} {return {}}
         set axis [Unit $i $j $k]
         if {$axis eq ""} {return {}}
     } elseif {[scan $rest %lf,%lf,%lf%n x y z end] == 4} {
-        if {$end != $len || !(max(abs($x), abs($y), abs($z)) < Inf)} {return {}}
+        if {$end != $len || !(abs($x) < Inf && abs($y) < Inf && abs($z) < Inf)} {return {}}
         set axis {}
     } else {
         return {}
