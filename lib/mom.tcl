@@ -46,8 +46,9 @@ namespace eval ::fivax::mom {
     # What the runtime does in the post interpreter, in one crossing per
     # record (see Runtime Flush): a flat list of operations {op name
     # value}: v sets the global name, a sets the global array name from
-    # the pairs value, e fires MOM_name (MOM_abort_event leaves the
-    # handler quietly). The event being fired is the variable event of
+    # the pairs value, p sets a position (see Runtime SetPosition: name
+    # is the previous {x y z i j k}, value the current one), e fires
+    # MOM_name (MOM_abort_event leaves the handler quietly). The event being fired is the variable event of
     # the post interpreter's namespace ::fivax::mom::runtime (for
     # MOM_ask_event_type).
     variable dispatch {{ops} {
@@ -58,6 +59,14 @@ namespace eval ::fivax::mom {
                 switch -- $op {
                     v {set ::$name $value}
                     a {array set ::$name $value}
+                    p {
+                        lassign $name ::mom_prev_mcs_goto(0) ::mom_prev_mcs_goto(1) \
+                            ::mom_prev_mcs_goto(2) ::mom_prev_tool_axis(0) \
+                            ::mom_prev_tool_axis(1) ::mom_prev_tool_axis(2)
+                        lassign $value ::mom_mcs_goto(0) ::mom_mcs_goto(1) ::mom_mcs_goto(2) \
+                            ::mom_tool_axis(0) ::mom_tool_axis(1) ::mom_tool_axis(2)
+                        lassign $value ::mom_pos(0) ::mom_pos(1) ::mom_pos(2)
+                    }
                     e {
                         set event $name
                         try {::MOM_$name} trap {FIVAX MOM ABORT_EVENT} {} {}
@@ -247,7 +256,7 @@ oo::class create ::fivax::mom::Runtime {
             ops {} records 0 blocks 0 warnings 0 events 0 pathOpen 0
             headerPending 0 rapid 0 circle {} cycle {} axis {0.0 0.0 1.0}
             point {} tool {} toolKey {} prevToolKey {} toolChanged 0 firstMove 1
-            toolNames {} handlers {} msysPending 0 unknown {} udes {}
+            toolNames {} msysPending 0 unknown {} udes {}
             scale 1.0 clUnit MM outUnit MM unitsSeen 0 firstUnit MM nurbs {}
         }
         set S(nc) [::fivax::nc::create -sequence 0]
@@ -370,9 +379,11 @@ oo::class create ::fivax::mom::Runtime {
     #	handlers of one record run in one crossing). Returns 1 if the post
     #	has the handler.
     method Fire {event {now 1}} {
-        set proc MOM_$event
-        if {![dict exists $S(handlers) $proc]} {my Has $proc}
-        set has [dict get $S(handlers) $proc]
+        if {[info exists S(has:MOM_$event)]} {
+            set has $S(has:MOM_$event)
+        } else {
+            set has [my Has MOM_$event]
+        }
         if {$has} {
             incr S(events)
             lappend S(ops) e $event {}
@@ -685,22 +696,15 @@ oo::class create ::fivax::mom::Runtime {
 
     # SetPosition --
     #	Sets mom_mcs_goto, mom_tool_axis (3-vectors) and their mom_prev_*
-    #	copies (the array pairs of the last position are kept for them).
-    #	mom_pos mirrors mom_mcs_goto: the replay runtime does no kinematics.
+    #	copies (the last position is kept for them: S(position), the point
+    #	and axis in one list). mom_pos mirrors mom_mcs_goto: the replay
+    #	runtime does no kinematics.
     method SetPosition {point axis} {
-        lassign $point x y z
-        lassign $axis i j k
-        set p [list 0 $x 1 $y 2 $z]
-        set a [list 0 $i 1 $j 2 $k]
-        if {$S(point) ne ""} {
-            lappend S(ops) a mom_prev_mcs_goto $S(pointPairs) a mom_prev_tool_axis $S(axisPairs)
-        } else {
-            lappend S(ops) a mom_prev_mcs_goto $p a mom_prev_tool_axis $a
-        }
+        set position [concat $point $axis]
+        if {$S(point) eq ""} {set S(position) $position}
+        lappend S(ops) p $S(position) $position
         set S(point) $point
-        set S(pointPairs) $p
-        set S(axisPairs) $a
-        lappend S(ops) a mom_mcs_goto $p a mom_tool_axis $a a mom_pos $p
+        set S(position) $position
     }
 
     # Arc --
@@ -845,10 +849,10 @@ oo::class create ::fivax::mom::Runtime {
 
     # Has -- Returns 1 when the post defines the command name.
     method Has {name} {
-        if {![dict exists $S(handlers) $name]} {
-            dict set S(handlers) $name [llength [$S(interp) eval [list info commands ::$name]]]
+        if {![info exists S(has:$name)]} {
+            set S(has:$name) [llength [$S(interp) eval [list info commands ::$name]]]
         }
-        dict get $S(handlers) $name
+        return $S(has:$name)
     }
 
     # PostVar -- Returns the post's global name, or default when it is not set.
