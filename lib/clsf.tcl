@@ -126,7 +126,8 @@ oo::class create ::fivax::clsf::Reader {
             if {[string first "\$" $text] >= 0} {
                 set text [my Join $text $first n]
             }
-            set text [string trim $text]
+            # (a line without white space has nothing to trim: the cheaper test)
+            if {![string is graph $text]} {set text [string trim $text]}
             if {$text eq ""} {continue}
             set line $n
             set rec [::fivax::clsf::parse $text $name $first]
@@ -352,6 +353,10 @@ proc ::fivax::clsf::Control {text} {
 #	Returns the record dict for one logical record text (joined, without
 #	comments) found at file:line, or {} for PAINT. Never evaluates text.
 proc ::fivax::clsf::parse {text file line} {
+    if {[string range $text 0 4] eq "GOTO/"} {
+        set rec [PlainGoto [string range $text 5 end] $file $line]
+        if {[dict size $rec]} {return $rec}
+    }
     set slash [string first / $text]
     if {$slash >= 0} {
         set major [string toupper [string trim [string range $text 0 [expr {$slash - 1}]]]]
@@ -363,13 +368,9 @@ proc ::fivax::clsf::parse {text file line} {
     if {![string is wordchar $major]} {set major [regsub -all {\s+} $major " "]}
     switch -exact -- $major {
         GOTO - FROM - GOHOME {
-            set plain [string is graph $rest]
-            if {$plain} {
-                set rec [PlainGoto $major $rest $file $line]
-                if {[dict size $rec]} {return $rec}
-            }
+            # Plain NX tokens need no trimming.
             set toks [split $rest ,]
-            if {!$plain} {
+            if {![string is graph $rest]} {
                 set toks [lmap t $toks {string trim $t}]
             }
             set cnt [llength $toks]
@@ -424,13 +425,14 @@ proc ::fivax::clsf::parse {text file line} {
 }
 
 # ::fivax::clsf::PlainGoto --
-#	The fast path of a GOTO, FROM or GOHOME whose rest has no white space
-#	(as NX writes it): returns its record when rest is exactly 3 or 6
-#	finite decimal numbers and the axis is a unit vector, else {} (parse
-#	then reads it token by token, with the errors). The numbers scan
-#	reads are those of num::parse (hex, binary, octal and nan stop it;
-#	Inf fails the finite test); %n proves nothing is left over.
-proc ::fivax::clsf::PlainGoto {major rest file line} {
+#	The fast path of a record "GOTO/rest" as NX writes it: returns its
+#	record when rest is exactly 3 or 6 finite decimal numbers and the
+#	axis is a unit vector, else {} (parse then reads it token by token,
+#	with the errors). The numbers scan reads are those of num::parse:
+#	hex, binary, octal and nan stop it, Inf fails the finite test, the
+#	white space it skips before a number is white space string trim
+#	removes, and %n proves nothing is left over.
+proc ::fivax::clsf::PlainGoto {rest file line} {
     set len [string length $rest]
     if {[scan $rest %lf,%lf,%lf,%lf,%lf,%lf%n x y z i j k end] == 7} {
         if {$end != $len || !(abs($x) < Inf && abs($y) < Inf && abs($z) < Inf)} {return {}}
@@ -442,7 +444,7 @@ proc ::fivax::clsf::PlainGoto {major rest file line} {
     } else {
         return {}
     }
-    dict create kind $major file $file line $line point [list $x $y $z] axis $axis
+    dict create kind GOTO file $file line $line point [list $x $y $z] axis $axis
 }
 
 # ::fivax::clsf::Tokens -- Returns the trimmed comma-separated tokens of rest.
