@@ -239,7 +239,9 @@ proc ::fivax::kin::orientations {model t} {
     } else {
         set d [expr {$dM - $w * $r2 / (1.0 - $h)}]
     }
-    set D [expr {$r * $sqnn - abs($d)}]
+    set rs [expr {$r * $sqnn}]
+    set ad [expr {abs($d)}]
+    set D [expr {$rs - $ad}]
     if {$D < -$edgeTol} {return {unreachable {}}}
     set b [expr {($h - $w * $k1) / $nn}]
     if {$r < $singularTol} {
@@ -250,7 +252,7 @@ proc ::fivax::kin::orientations {model t} {
     }
     set a [expr {$d / $nn}]
     if {$D > $edgeTol} {
-        set g [expr {sqrt($D * ($r * $sqnn + abs($d))) / $nn}]
+        set g [expr {sqrt($D * ($rs + $ad)) / $nn}]
     } else {
         set g 0.0
     }
@@ -452,8 +454,10 @@ proc ::fivax::kin::interpolationBound {model j0 j1 P0 P1 t0 t1 ep ea} {
         rh k1 scale
     lassign $P0 x0 y0 z0
     lassign $P1 x1 y1 z1
-    set w1 [expr {abs($a1 - $a0)}]
-    set w2 [expr {abs($b1 - $b0)}]
+    # (abs() is a command call in expr: the ternaries give the same results
+    # at a fraction of the cost; a zero may differ only in its sign)
+    set w1 [expr {$a1 > $a0 ? $a1 - $a0 : $a0 - $a1}]
+    set w2 [expr {$b1 > $b0 ? $b1 - $b0 : $b0 - $b1}]
     set vx [expr {$X1 - $X0}]
     set vy [expr {$Y1 - $Y0}]
     set vz [expr {$Z1 - $Z0}]
@@ -491,8 +495,12 @@ proc ::fivax::kin::interpolationBound {model j0 j1 P0 P1 t0 t1 ep ea} {
         }
         set r2 [expr {0.5 * ($r2 + $w1 * $r1 + $v)}]
     }
-    set size [expr {$scale + abs($X0) + abs($Y0) + abs($Z0) + abs($X1) + abs($Y1) + abs($Z1)
-        + abs($x0) + abs($y0) + abs($z0) + abs($x1) + abs($y1) + abs($z1)}]
+    set size [expr {$scale + ($X0 > 0.0 ? $X0 : 0.0 - $X0) + ($Y0 > 0.0 ? $Y0 : 0.0 - $Y0)
+        + ($Z0 > 0.0 ? $Z0 : 0.0 - $Z0) + ($X1 > 0.0 ? $X1 : 0.0 - $X1)
+        + ($Y1 > 0.0 ? $Y1 : 0.0 - $Y1) + ($Z1 > 0.0 ? $Z1 : 0.0 - $Z1)
+        + ($x0 > 0.0 ? $x0 : 0.0 - $x0) + ($y0 > 0.0 ? $y0 : 0.0 - $y0)
+        + ($z0 > 0.0 ? $z0 : 0.0 - $z0) + ($x1 > 0.0 ? $x1 : 0.0 - $x1)
+        + ($y1 > 0.0 ? $y1 : 0.0 - $y1) + ($z1 > 0.0 ? $z1 : 0.0 - $z1)}]
     set bp [expr {($w1 * ($w1 + 2.0 * $w2) * $r1 + $w2 * $w2 * $r2 + $lin) / 8.0 + $ep
         + 1e-9 * (1.0 + $size)}]
     # the axis: k2 from |u2 x t| at the ends

@@ -33,12 +33,15 @@ oo::define ::fivax::motion::Planner {
         set y [expr {$y1 - $y0}]
         set z [expr {$z1 - $z0}]
         set d [expr {sqrt($x * $x + $y * $y + $z * $z)}]
-        set turn [expr {abs($b1 - $a1) + abs($b2 - $a2)}]
+        # (as abs(), see Cost)
+        set d1 [expr {$b1 > $a1 ? $b1 - $a1 : $a1 - $b1}]
+        set d2 [expr {$b2 > $a2 ? $b2 - $a2 : $a2 - $b2}]
+        set turn [expr {$d1 + $d2}]
         if {$turn > 1e-9 && $d < 1e-9} {
             incr S(dwells)
             set S(dwellTurn) [expr {$S(dwellTurn) + $turn}]
         }
-        if {$S(feed) eq "direct" || (abs($b1 - $a1) <= 1e-9 && abs($b2 - $a2) <= 1e-9)} {
+        if {$S(feed) eq "direct" || ($d1 <= 1e-9 && $d2 <= 1e-9)} {
             return [list direct $f $f $d]
         }
         if {$S(feed) eq "inverse"} {

@@ -24,9 +24,8 @@ oo::define ::fivax::motion::Planner {
     # opposite (no great circle between them), and, before it is split, a
     # move ending outside the machine's travel.
     method Linearise {a b depth src} {
-        namespace upvar ::fivax::motion maxDepth maxDepth maxPieces maxPieces \
-            retractCost retractCost
         if {$S(tol) <= 0} {return [list $b]}
+        namespace upvar ::fivax::motion retractCost retractCost
         lassign $a ja Pa ta acta la
         lassign $b jb Pb tb actb lb
         if {$depth == 0} {
@@ -65,6 +64,7 @@ oo::define ::fivax::motion::Planner {
             lassign $jb X Y Z
             ::fivax::machine::checkLimits $S(machine) [list X $X Y $Y Z $Z] $src
         }
+        namespace upvar ::fivax::motion maxDepth maxDepth maxPieces maxPieces
         if {$depth < $maxDepth && $S(pieces) < $maxPieces} {
             incr S(pieces) $n
             try {
@@ -122,7 +122,7 @@ proc ::fivax::motion::Split {ctx a b n src} {
         foreach end [list $a $b] other [list $b $a] {
             lassign $end je P t
             if {[InCone $ctx $t]} {
-                set c [lindex [Quantize $ctx [list [Departure $ctx $end $other $src]]] 0]
+                set c [Quantize [dict get $ctx step] [Departure $ctx $end $other $src]]
                 if {abs($c - [lindex $je 4]) > 1e-9} {
                     set q1 [HoldTilt $ctx $t [lindex $je 3] $c]
                     if {$q1 ne ""} {return [list [Record $ctx $P $t $q1 $c -1 1]]}

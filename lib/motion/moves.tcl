@@ -13,7 +13,8 @@
 #	singular cone, where candidates are exact. Rotaries are rounded to the
 #	output resolution first, so that X Y Z absorb the rounding.
 proc ::fivax::motion::Record {ctx P t q1 q2 lab cone} {
-    set q [Quantize $ctx [list $q1 $q2]]
+    set step [dict get $ctx step]
+    set q [list [Quantize $step $q1] [Quantize $step $q2]]
     set model [dict get $ctx model]
     set joints [concat [::fivax::kin::position $model $P $q] $q]
     if {!$cone} {return [list $joints $P $t $t $lab]}
@@ -172,16 +173,14 @@ oo::define ::fivax::motion::Planner {
     # Adds the rotary travel of moves (records made by Move: axes X Y Z,
     # then the rotaries) to the statistics.
     method Travel {moves} {
-        if {$S(last) eq ""} {
-            set p1 ""
-        } else {
-            lassign [lindex $S(last) 0] - - - p1 p2
-        }
+        set from [expr {$S(last) ne ""}]
+        if {$from} {lassign [lindex $S(last) 0] - - - p1 p2}
         foreach move $moves {
             lassign [dict get $move axes] - - - - - - - q1 - q2
-            if {$p1 ne ""} {
+            if {$from} {
                 set S(travel) [expr {$S(travel) + abs($q1 - $p1) + abs($q2 - $p2)}]
             }
+            set from 1
             set p1 $q1
             set p2 $q2
         }

@@ -199,7 +199,8 @@ oo::class create ::fivax::motion::Planner {
             lassign [my Route [list add $kind $P $t $feed $src] $t] done pre
             if {$done} {return $pre}
         }
-        lassign [my ToWork $P $t] P t
+        # (ToWork maps nothing without -msys)
+        if {$S(msys)} {lassign [my ToWork $P $t] P t}
         concat $pre [my AddWork $kind $P [::fivax::vec::unit $t] $feed $src]
     }
 
@@ -463,9 +464,9 @@ oo::class create ::fivax::motion::Planner {
             while {$e < $n && [lindex $S(buf) $e 6]} {incr e}
             if {$e >= $n} break
             # the azimuth the path leaves the cone with (as Split sees it)
-            set q2 [lindex [::fivax::motion::Quantize $ctx [list [::fivax::motion::Departure $ctx \
+            set q2 [::fivax::motion::Quantize [dict get $ctx step] [::fivax::motion::Departure $ctx \
                 [my PathRecord $path [expr {$e - 1}]] [my PathRecord $path $e] \
-                [lindex $S(buf) $e 4]]]] 0]
+                [lindex $S(buf) $e 4]]]
             set ok 1
             for {set i $j} {$i < $e} {incr i} {
                 set q1 [lindex $S(buf) $i 5 [expr {5 * [lindex $path $i]}]]
