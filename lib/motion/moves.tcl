@@ -178,7 +178,9 @@ oo::define ::fivax::motion::Planner {
         foreach move $moves {
             lassign [dict get $move axes] - - - - - - - q1 - q2
             if {$from} {
-                set S(travel) [expr {$S(travel) + abs($q1 - $p1) + abs($q2 - $p2)}]
+                # (as abs(), see Cost)
+                set S(travel) [expr {$S(travel) + ($q1 > $p1 ? $q1 - $p1 : $p1 - $q1)
+                    + ($q2 > $p2 ? $q2 - $p2 : $p2 - $q2)}]
             }
             set from 1
             set p1 $q1

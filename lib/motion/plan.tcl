@@ -458,8 +458,7 @@ oo::class create ::fivax::motion::Planner {
         set out [dict create]
         set n [llength $path]
         for {set j 0} {$j < $k} {incr j} {
-            lassign [lindex $S(buf) $j] kind - - - - - cone
-            if {$kind ne "rapid" || !$cone} continue
+            if {[lindex $S(buf) $j 0] ne "rapid" || ![lindex $S(buf) $j 6]} continue
             set e $j
             while {$e < $n && [lindex $S(buf) $e 6]} {incr e}
             if {$e >= $n} break
