@@ -89,6 +89,16 @@ proc ::fivax::kin::model {machine toolLength {tableOffset ""}} {
     }
     dict set m names $names
     set kc [dict get {headhead 0 headtable 1 tabletable 2} [dict get $machine kind]]
+    # Constants of a head axis 1 (the point it turns is the zero-pose tip,
+    # -p1 from p1), by the very expressions of forward and position: for
+    # forward v = -p1, u1.v and u1 x v; for position u1.p1 and u1 x p1.
+    lassign $geo ux1 uy1 uz1 px1 py1 pz1
+    set vx [expr {-$px1}]; set vy [expr {-$py1}]; set vz [expr {-$pz1}]
+    lappend geo $vx $vy $vz [expr {$ux1 * $vx + $uy1 * $vy + $uz1 * $vz}] \
+        [expr {$uy1 * $vz - $uz1 * $vy}] [expr {$uz1 * $vx - $ux1 * $vz}] \
+        [expr {$ux1 * $vy - $uy1 * $vx}] \
+        [expr {$ux1 * $px1 + $uy1 * $py1 + $uz1 * $pz1}] [expr {$uy1 * $pz1 - $uz1 * $py1}] \
+        [expr {$uz1 * $px1 - $ux1 * $pz1}] [expr {$ux1 * $py1 - $uy1 * $px1}]
     dict set m geo [linsert $geo 0 $kc]
 
     # Orientation constants for (O): w = u1.u2, n = u1 x u2, nn = |n|^2,
@@ -140,24 +150,28 @@ proc ::fivax::kin::model {machine toolLength {tableOffset ""}} {
 #	joint vector {X Y Z q1 q2} (kinematics.md section 2).
 proc ::fivax::kin::forward {model joints} {
     lassign $joints X Y Z q1 q2
-    lassign [dict get $model geo] kc ux1 uy1 uz1 px1 py1 pz1 s1 z1 ux2 uy2 uz2 px2 py2 pz2 s2 z2
+    lassign [dict get $model geo] kc ux1 uy1 uz1 px1 py1 pz1 s1 z1 ux2 uy2 uz2 px2 py2 pz2 s2 z2 \
+        vx vy vz vu ex ey ez
     set a [expr {$s1 * ($q1 - $z1)}]
     set c1 [expr {cos($a)}]
     set n1 [expr {sin($a)}]
     set a [expr {$s2 * ($q2 - $z2)}]
     set c2 [expr {cos($a)}]
     set n2 [expr {sin($a)}]
-    # v: the point entering axis 1, relative to p1
+    # v: the point entering axis 1, relative to p1, with u1.v and u1 x v
+    # (on a head the model's constants, v = -p1)
     if {$kc == 2} {
         set vx [expr {$X - $px1}]; set vy [expr {$Y - $py1}]; set vz [expr {$Z - $pz1}]
-    } else {
-        set vx [expr {-$px1}]; set vy [expr {-$py1}]; set vz [expr {-$pz1}]
+        set vu [expr {$ux1 * $vx + $uy1 * $vy + $uz1 * $vz}]
+        set ex [expr {$uy1 * $vz - $uz1 * $vy}]
+        set ey [expr {$uz1 * $vx - $ux1 * $vz}]
+        set ez [expr {$ux1 * $vy - $uy1 * $vx}]
     }
     # R1 (v) + p1 - p2, Rodrigues
-    set k [expr {(1.0 - $c1) * ($ux1 * $vx + $uy1 * $vy + $uz1 * $vz)}]
-    set wx [expr {$vx * $c1 + ($uy1 * $vz - $uz1 * $vy) * $n1 + $ux1 * $k + $px1 - $px2}]
-    set wy [expr {$vy * $c1 + ($uz1 * $vx - $ux1 * $vz) * $n1 + $uy1 * $k + $py1 - $py2}]
-    set wz [expr {$vz * $c1 + ($ux1 * $vy - $uy1 * $vx) * $n1 + $uz1 * $k + $pz1 - $pz2}]
+    set k [expr {(1.0 - $c1) * $vu}]
+    set wx [expr {$vx * $c1 + $ex * $n1 + $ux1 * $k + $px1 - $px2}]
+    set wy [expr {$vy * $c1 + $ey * $n1 + $uy1 * $k + $py1 - $py2}]
+    set wz [expr {$vz * $c1 + $ez * $n1 + $uz1 * $k + $pz1 - $pz2}]
     if {$kc == 1} {
         set wx [expr {$wx + $X}]; set wy [expr {$wy + $Y}]; set wz [expr {$wz + $Z}]
     }
@@ -239,7 +253,9 @@ proc ::fivax::kin::orientations {model t} {
     } else {
         set d [expr {$dM - $w * $r2 / (1.0 - $h)}]
     }
-    set D [expr {$r * $sqnn - abs($d)}]
+    set rs [expr {$r * $sqnn}]
+    set ad [expr {abs($d)}]
+    set D [expr {$rs - $ad}]
     if {$D < -$edgeTol} {return {unreachable {}}}
     set b [expr {($h - $w * $k1) / $nn}]
     if {$r < $singularTol} {
@@ -250,7 +266,7 @@ proc ::fivax::kin::orientations {model t} {
     }
     set a [expr {$d / $nn}]
     if {$D > $edgeTol} {
-        set g [expr {sqrt($D * ($r * $sqnn + abs($d))) / $nn}]
+        set g [expr {sqrt($D * ($rs + $ad)) / $nn}]
     } else {
         set g 0.0
     }
@@ -277,7 +293,8 @@ proc ::fivax::kin::orientations {model t} {
 proc ::fivax::kin::position {model P q} {
     lassign $P Px Py Pz
     lassign $q q1 q2
-    lassign [dict get $model geo] kc ux1 uy1 uz1 px1 py1 pz1 s1 z1 ux2 uy2 uz2 px2 py2 pz2 s2 z2
+    lassign [dict get $model geo] kc ux1 uy1 uz1 px1 py1 pz1 s1 z1 ux2 uy2 uz2 px2 py2 pz2 s2 z2 \
+        hx hy hz - - - - pu pcx pcy pcz
     set a [expr {$s1 * ($q1 - $z1)}]
     set c1 [expr {cos($a)}]
     set n1 [expr {sin($a)}]
@@ -285,11 +302,11 @@ proc ::fivax::kin::position {model P q} {
     set c2 [expr {cos($a)}]
     set n2 [expr {sin($a)}]
     if {$kc == 0} {
-        # XYZ = P - (R2 (R1 (-p1) + p1 - p2) + p2)
-        set k [expr {-(1.0 - $c1) * ($ux1 * $px1 + $uy1 * $py1 + $uz1 * $pz1)}]
-        set wx [expr {-$px1 * $c1 - ($uy1 * $pz1 - $uz1 * $py1) * $n1 + $ux1 * $k + $px1 - $px2}]
-        set wy [expr {-$py1 * $c1 - ($uz1 * $px1 - $ux1 * $pz1) * $n1 + $uy1 * $k + $py1 - $py2}]
-        set wz [expr {-$pz1 * $c1 - ($ux1 * $py1 - $uy1 * $px1) * $n1 + $uz1 * $k + $pz1 - $pz2}]
+        # XYZ = P - (R2 (R1 (-p1) + p1 - p2) + p2)   (hx.. -p1, pu.. u1.p1, u1 x p1)
+        set k [expr {-(1.0 - $c1) * $pu}]
+        set wx [expr {$hx * $c1 - $pcx * $n1 + $ux1 * $k + $px1 - $px2}]
+        set wy [expr {$hy * $c1 - $pcy * $n1 + $uy1 * $k + $py1 - $py2}]
+        set wz [expr {$hz * $c1 - $pcz * $n1 + $uz1 * $k + $pz1 - $pz2}]
         set k [expr {(1.0 - $c2) * ($ux2 * $wx + $uy2 * $wy + $uz2 * $wz)}]
         return [list \
             [expr {$Px - ($wx * $c2 + ($uy2 * $wz - $uz2 * $wy) * $n2 + $ux2 * $k + $px2)}] \
@@ -304,11 +321,11 @@ proc ::fivax::kin::position {model P q} {
     set mz [expr {$vz * $c2 - ($ux2 * $vy - $uy2 * $vx) * $n2 + $uz2 * $k + $pz2}]
     if {$kc == 1} {
         # XYZ = m - (R1 (-p1) + p1)
-        set k [expr {-(1.0 - $c1) * ($ux1 * $px1 + $uy1 * $py1 + $uz1 * $pz1)}]
+        set k [expr {-(1.0 - $c1) * $pu}]
         return [list \
-            [expr {$mx + $px1 * $c1 + ($uy1 * $pz1 - $uz1 * $py1) * $n1 - $ux1 * $k - $px1}] \
-            [expr {$my + $py1 * $c1 + ($uz1 * $px1 - $ux1 * $pz1) * $n1 - $uy1 * $k - $py1}] \
-            [expr {$mz + $pz1 * $c1 + ($ux1 * $py1 - $uy1 * $px1) * $n1 - $uz1 * $k - $pz1}]]
+            [expr {$mx + $px1 * $c1 + $pcx * $n1 - $ux1 * $k - $px1}] \
+            [expr {$my + $py1 * $c1 + $pcy * $n1 - $uy1 * $k - $py1}] \
+            [expr {$mz + $pz1 * $c1 + $pcz * $n1 - $uz1 * $k - $pz1}]]
     }
     # Undo the table axis 1: XYZ = R1^-1 (m - p1) + p1
     set vx [expr {$mx - $px1}]; set vy [expr {$my - $py1}]; set vz [expr {$mz - $pz1}]
@@ -452,8 +469,10 @@ proc ::fivax::kin::interpolationBound {model j0 j1 P0 P1 t0 t1 ep ea} {
         rh k1 scale
     lassign $P0 x0 y0 z0
     lassign $P1 x1 y1 z1
-    set w1 [expr {abs($a1 - $a0)}]
-    set w2 [expr {abs($b1 - $b0)}]
+    # (abs() is a command call in expr: the ternaries give the same results
+    # at a fraction of the cost; a zero may differ only in its sign)
+    set w1 [expr {$a1 > $a0 ? $a1 - $a0 : $a0 - $a1}]
+    set w2 [expr {$b1 > $b0 ? $b1 - $b0 : $b0 - $b1}]
     set vx [expr {$X1 - $X0}]
     set vy [expr {$Y1 - $Y0}]
     set vz [expr {$Z1 - $Z0}]
@@ -491,8 +510,12 @@ proc ::fivax::kin::interpolationBound {model j0 j1 P0 P1 t0 t1 ep ea} {
         }
         set r2 [expr {0.5 * ($r2 + $w1 * $r1 + $v)}]
     }
-    set size [expr {$scale + abs($X0) + abs($Y0) + abs($Z0) + abs($X1) + abs($Y1) + abs($Z1)
-        + abs($x0) + abs($y0) + abs($z0) + abs($x1) + abs($y1) + abs($z1)}]
+    set size [expr {$scale + ($X0 > 0.0 ? $X0 : 0.0 - $X0) + ($Y0 > 0.0 ? $Y0 : 0.0 - $Y0)
+        + ($Z0 > 0.0 ? $Z0 : 0.0 - $Z0) + ($X1 > 0.0 ? $X1 : 0.0 - $X1)
+        + ($Y1 > 0.0 ? $Y1 : 0.0 - $Y1) + ($Z1 > 0.0 ? $Z1 : 0.0 - $Z1)
+        + ($x0 > 0.0 ? $x0 : 0.0 - $x0) + ($y0 > 0.0 ? $y0 : 0.0 - $y0)
+        + ($z0 > 0.0 ? $z0 : 0.0 - $z0) + ($x1 > 0.0 ? $x1 : 0.0 - $x1)
+        + ($y1 > 0.0 ? $y1 : 0.0 - $y1) + ($z1 > 0.0 ? $z1 : 0.0 - $z1)}]
     set bp [expr {($w1 * ($w1 + 2.0 * $w2) * $r1 + $w2 * $w2 * $r2 + $lin) / 8.0 + $ep
         + 1e-9 * (1.0 + $size)}]
     # the axis: k2 from |u2 x t| at the ends

@@ -13,8 +13,8 @@
 #	axes (the two axis dicts in chain order: tilt, azimuth, with name min
 #	max continuous unlimited rollover prefer swing), limits ({min max
 #	continuous unlimited} per axis), swing ({ms1 ms2}: max_swing per
-#	axis), u2 (the azimuth axis direction), sinCone, step (rotary output
-#	resolution, rad). Candidates are flat triples {q1 q2 branch ...};
+#	axis), u2 (the azimuth axis direction), sinCone and its square cone2,
+#	step (rotary output resolution, rad). Candidates are flat triples {q1 q2 branch ...};
 #	branch is 0 or 1 for the two inverse solutions, -1 where they meet.
 
 # ::fivax::motion::Context --
@@ -22,29 +22,31 @@
 #	planner's per-axis dicts axes, the singular cone and the rotary output
 #	resolution (both degrees).
 proc ::fivax::motion::Context {model name axes cone step} {
+    set sinCone [expr {sin([::fivax::num::rad $cone])}]
     dict create model $model name $name axes $axes \
         limits [lmap a $axes {
             list [dict get $a min] [dict get $a max] [dict get $a continuous] [dict get $a unlimited]
         }] \
         swing [lmap a $axes {dict get $a swing}] u2 [dict get $model u2] \
-        sinCone [expr {sin([::fivax::num::rad $cone])}] step [::fivax::num::rad $step]
+        sinCone $sinCone cone2 [expr {$sinCone ** 2}] step [::fivax::num::rad $step]
 }
 
 # ::fivax::motion::Candidates --
-#	Returns the flat candidate triples for unit axis t. refs are the flat
+#	Returns the flat candidate triples for unit axis t (cone: InCone of t,
+#	which the callers also need). refs are the flat
 #	triples of the previous candidates ({} at a first point): continuous
 #	axes take the aliases nearest them, and in the singular cone the
 #	azimuth is held at theirs (exact solutions there only when no held
 #	tilt is within the limits).
 #	Errors: {FIVAX MOTION UNREACHABLE}; {FIVAX MOTION LIMIT} when every
 #	solution lies outside the limits.
-proc ::fivax::motion::Candidates {ctx t refs src} {
+proc ::fivax::motion::Candidates {ctx t cone refs src} {
     lassign [::fivax::kin::orientations [dict get $ctx model] $t] status sols
     if {$status eq "unreachable"} {
         ::fivax::Fail MOTION UNREACHABLE \
             "$src: tool axis ([AxisText $t]) unreachable on [dict get $ctx name]"
     }
-    set cone [expr {$status eq "singular" || [InCone $ctx $t]}]
+    set cone [expr {$status eq "singular" || $cone}]
     set out {}
     if {$cone && [llength $refs]} {set out [Held $ctx $t $refs]}
     if {![llength $out]} {
@@ -62,13 +64,19 @@ proc ::fivax::motion::Candidates {ctx t refs src} {
 #	axis value expanded to its in-limit aliases near refs; branch -1 for
 #	all when merged is 1, else the solution's index.
 proc ::fivax::motion::Exact {ctx sols refs merged} {
-    set out {}
-    set lab [expr {$merged ? -1 : 0}]
+    lassign [dict get $ctx limits] lim1 lim2
+    set as {}
+    set bs {}
     foreach sol $sols {
         lassign $sol a b
-        set bs [Aliases $ctx 2 $b $refs]
-        foreach x [Aliases $ctx 1 $a $refs] {
-            foreach y $bs {lappend out $x $y $lab}
+        lappend as $a
+        lappend bs $b
+    }
+    set out {}
+    set lab [expr {$merged ? -1 : 0}]
+    foreach xs [Aliases $lim1 1 $as $refs] ys [Aliases $lim2 2 $bs $refs] {
+        foreach x $xs {
+            foreach y $ys {lappend out $x $y $lab}
         }
         if {!$merged} {incr lab}
     }
@@ -97,7 +105,8 @@ proc ::fivax::motion::Held {ctx t refs} {
 proc ::fivax::motion::HoldTilt {ctx t r1 q2} {
     set best ""
     set bd Inf
-    foreach x [Aliases $ctx 1 [BestTilt [dict get $ctx model] $t $q2] [list $r1 $q2 -1]] {
+    set q1 [BestTilt [dict get $ctx model] $t $q2]
+    foreach x [lindex [Aliases [lindex [dict get $ctx limits] 0] 1 [list $q1] [list $r1 $q2 -1]] 0] {
         if {abs($x - $r1) < $bd} {
             set bd [expr {abs($x - $r1)}]
             set best $x
@@ -122,44 +131,55 @@ proc ::fivax::motion::BestTilt {model t q2} {
 }
 
 # ::fivax::motion::Aliases --
-#	Returns the values equivalent to q (mod 360 deg) that axis i (1 tilt,
-#	2 azimuth) may take: all within the limits for a limited axis; for a
-#	continuous one the alias nearest each ref value (element i of the flat
-#	triples refs; with no refs q and its alias of the other sign), with
-#	its neighbours when the axis has finite limits.
-proc ::fivax::motion::Aliases {ctx i q refs} {
-    variable pi
-    lassign [lindex [dict get $ctx limits] $i-1] min max continuous unlimited
-    set twoPi [expr {2.0 * $pi}]
-    if {!$continuous} {
-        if {$q >= $min && $q <= $max && $q - $twoPi < $min && $q + $twoPi > $max} {
-            return [list $q]
+#	Returns, for each value q of qs, the values equivalent to q (mod 360
+#	deg) that axis i (1 tilt, 2 azimuth; lim its {min max continuous
+#	unlimited} from the context's limits) may take: all within the limits
+#	for a limited axis; for a continuous one the alias nearest each ref
+#	value (element i of the flat triples refs; with no refs q and its
+#	alias of the other sign), with its neighbours when the axis has finite
+#	limits.
+proc ::fivax::motion::Aliases {lim i qs refs} {
+    lassign $lim min max continuous unlimited
+    # (6.283185307179586 is 2 pi)
+    set out {}
+    foreach q $qs {
+        if {!$continuous} {
+            if {$q >= $min && $q <= $max && $q - 6.283185307179586 < $min
+                    && $q + 6.283185307179586 > $max} {
+                lappend out [list $q]
+                continue
+            }
+            set vals {}
+            set k [expr {ceil(($min - $q) / 6.283185307179586 - 1e-9)}]
+            for {set v [expr {$q + 6.283185307179586 * $k}]} {$v <= $max + 1e-9} \
+                    {set v [expr {$v + 6.283185307179586}]} {
+                lappend vals [expr {$v < $min ? $min : $v > $max ? $max : $v}]
+            }
+            lappend out $vals
+            continue
+        }
+        if {![llength $refs]} {
+            set try [list $q [expr {$q > 0 ? $q - 6.283185307179586 : $q + 6.283185307179586}]]
+        } else {
+            set try {}
+            foreach {r1 r2 -} $refs {
+                set r [expr {$i == 1 ? $r1 : $r2}]
+                set v [Near $q $r]
+                lappend try $v
+                if {!$unlimited} {
+                    lappend try [expr {$v - 6.283185307179586}] [expr {$v + 6.283185307179586}]
+                }
+            }
         }
         set vals {}
-        set k [expr {ceil(($min - $q) / $twoPi - 1e-9)}]
-        for {set v [expr {$q + $twoPi * $k}]} {$v <= $max + 1e-9} {set v [expr {$v + $twoPi}]} {
-            lappend vals [expr {$v < $min ? $min : $v > $max ? $max : $v}]
+        foreach v $try {
+            if {$v >= $min - 1e-9 && $v <= $max + 1e-9 && $v ni $vals} {
+                lappend vals [expr {$v < $min ? $min : $v > $max ? $max : $v}]
+            }
         }
-        return $vals
+        lappend out $vals
     }
-    if {![llength $refs]} {
-        set try [list $q [expr {$q > 0 ? $q - $twoPi : $q + $twoPi}]]
-    } else {
-        set try {}
-        foreach {r1 r2 -} $refs {
-            set r [expr {$i == 1 ? $r1 : $r2}]
-            set v [Near $q $r]
-            lappend try $v
-            if {!$unlimited} {lappend try [expr {$v - $twoPi}] [expr {$v + $twoPi}]}
-        }
-    }
-    set vals {}
-    foreach v $try {
-        if {$v >= $min - 1e-9 && $v <= $max + 1e-9 && $v ni $vals} {
-            lappend vals [expr {$v < $min ? $min : $v > $max ? $max : $v}]
-        }
-    }
-    return $vals
+    return $out
 }
 
 # ::fivax::motion::Near -- Returns the alias of angle q (mod 360 deg) nearest r.
@@ -174,14 +194,14 @@ proc ::fivax::motion::InCone {ctx t} {
     lassign $t tx ty tz
     lassign [dict get $ctx u2] ux uy uz
     expr {($ty * $uz - $tz * $uy) ** 2 + ($tz * $ux - $tx * $uz) ** 2
-          + ($tx * $uy - $ty * $ux) ** 2 < [dict get $ctx sinCone] ** 2}
+          + ($tx * $uy - $ty * $ux) ** 2 < [dict get $ctx cone2]}
 }
 
-# ::fivax::motion::Quantize -- Returns rotary value q (rad) rounded to the output resolution.
-proc ::fivax::motion::Quantize {ctx q} {
-    set step [dict get $ctx step]
-    if {$step <= 0} {return $q}
-    expr {round($q / $step) * $step}
+# ::fivax::motion::Quantize --
+#	Returns rotary value q (rad) rounded to the output resolution step (the
+#	context's step; 0: exact).
+proc ::fivax::motion::Quantize {step q} {
+    expr {$step > 0 ? round($q / $step) * $step : $q}
 }
 
 # ::fivax::motion::Pick --
@@ -193,7 +213,8 @@ proc ::fivax::motion::Quantize {ctx q} {
 #	Errors: those of Candidates.
 proc ::fivax::motion::Pick {ctx t g1 g2 la lb src} {
     lassign [::fivax::kin::orientations [dict get $ctx model] $t] status sols
-    if {$status eq "regular" && ![InCone $ctx $t]} {
+    set cone [InCone $ctx $t]
+    if {$status eq "regular" && !$cone} {
         lassign [dict get $ctx limits] lim1 lim2
         lassign $lim1 min1 max1
         lassign $lim2 min2 max2
@@ -211,7 +232,7 @@ proc ::fivax::motion::Pick {ctx t g1 g2 la lb src} {
         lassign [Closest $cands $g1 $g2 $la $lb] best d
         if {$best ne "" && $d < Inf} {return $best}
     }
-    lindex [Closest [Candidates $ctx $t [list $g1 $g2 -1] $src] $g1 $g2 $la $lb] 0
+    lindex [Closest [Candidates $ctx $t $cone [list $g1 $g2 -1] $src] $g1 $g2 $la $lb] 0
 }
 
 # ::fivax::motion::Closest --
@@ -242,12 +263,15 @@ proc ::fivax::motion::Closest {cands g1 g2 la lb} {
 #	branch outside the singular cone (branch -1), or a swing above the
 #	machine's max_swing (ms1, ms2).
 proc ::fivax::motion::Cost {ms1 ms2 isFeed a1 a2 al b1 b2 bl {w1 1.0} {w2 1.0}} {
-    variable retractCost
-    set d1 [expr {abs($b1 - $a1)}]
-    set d2 [expr {abs($b2 - $a2)}]
-    if {!$isFeed || ([Joins $al $bl] && $d1 <= $ms1 && $d2 <= $ms2)} {
+    # (abs() is a command call in expr: the ternaries give the same results
+    # at a fraction of the cost, a zero differing only in its sign; the same
+    # branch joins: Joins is asked only when they differ)
+    set d1 [expr {$b1 > $a1 ? $b1 - $a1 : $a1 - $b1}]
+    set d2 [expr {$b2 > $a2 ? $b2 - $a2 : $a2 - $b2}]
+    if {!$isFeed || (($al == $bl || [Joins $al $bl]) && $d1 <= $ms1 && $d2 <= $ms2)} {
         return [expr {$w1 * $d1 + $w2 * $d2}]
     }
+    variable retractCost
     expr {$w1 * $d1 + $w2 * $d2 + $retractCost}
 }
 

@@ -18,11 +18,30 @@ oo::define ::fivax::motion::Planner {
     # in the workpiece frame, at most inverse_time_max), or dpm (rate: the
     # combined length sqrt(dX^2+dY^2+dZ^2+dA^2+dB^2) (mm, deg) per block
     # time d/f, clamped to feed_min..feed_max).
+    # Counts a dwell swing: a move that only turns the rotaries while the
+    # tip stays put (at the singular direction, where the path leaves the
+    # pole with another azimuth).
     method FeedOf {a b f} {
-        lassign [lindex $a 0] X0 Y0 Z0 a1 a2
-        lassign [lindex $b 0] X1 Y1 Z1 b1 b2
-        set d [::fivax::vec::dist [lindex $b 1] [lindex $a 1]]
-        if {$S(feed) eq "direct" || (abs($b1 - $a1) <= 1e-9 && abs($b2 - $a2) <= 1e-9)} {
+        lassign $a ja Pa
+        lassign $b jb Pb
+        lassign $ja X0 Y0 Z0 a1 a2
+        lassign $jb X1 Y1 Z1 b1 b2
+        # (vec::dist written out)
+        lassign $Pb x1 y1 z1
+        lassign $Pa x0 y0 z0
+        set x [expr {$x1 - $x0}]
+        set y [expr {$y1 - $y0}]
+        set z [expr {$z1 - $z0}]
+        set d [expr {sqrt($x * $x + $y * $y + $z * $z)}]
+        # (as abs(), see Cost)
+        set d1 [expr {$b1 > $a1 ? $b1 - $a1 : $a1 - $b1}]
+        set d2 [expr {$b2 > $a2 ? $b2 - $a2 : $a2 - $b2}]
+        set turn [expr {$d1 + $d2}]
+        if {$turn > 1e-9 && $d < 1e-9} {
+            incr S(dwells)
+            set S(dwellTurn) [expr {$S(dwellTurn) + $turn}]
+        }
+        if {$S(feed) eq "direct" || ($d1 <= 1e-9 && $d2 <= 1e-9)} {
             return [list direct $f $f $d]
         }
         if {$S(feed) eq "inverse"} {

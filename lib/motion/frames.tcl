@@ -46,8 +46,11 @@ oo::define ::fivax::motion::Planner {
     # move records. A native arc record (see NativeArc) where it can be
     # one, else the arc's points within tol (mm) as cutting moves.
     method arc {P0 P1 center n sense turns t feed src tol} {
-        lassign [my Route [list arc $P0 $P1 $center $n $sense $turns $t $feed $src $tol] $t] done pre
-        if {$done} {return $pre}
+        set pre {}
+        if {$S(wp) ne "off"} {
+            lassign [my Route [list arc $P0 $P1 $center $n $sense $turns $t $feed $src $tol] $t] done pre
+            if {$done} {return $pre}
+        }
         lassign [my ToWork $P0 $t] P0 tw
         lassign [my ToWork $P1 $t] P1
         lassign [my ToWork $center $n] C nw
@@ -139,10 +142,11 @@ oo::define ::fivax::motion::Planner {
     }
 
     # Routes CL item (a method call with its arguments) with tool axis t
-    # (CL frame); returns {done moves}: done 1 when the item has been
-    # taken (held or posted, moves those written), done 0 when the caller
-    # posts it itself after moves (the end of a plane, or points written
-    # before a new segment is held).
+    # (CL frame) while watching (S(wp) not off: callers skip it then);
+    # returns {done moves}: done 1 when the item has been taken (held or
+    # posted, moves those written), done 0 when the caller posts it itself
+    # after moves (the end of a plane, or points written before a new
+    # segment is held).
     #
     # A work-plane segment is a run of items with one tool axis off the
     # workpiece Z, entered by a positioning move (or the operation's
@@ -153,7 +157,6 @@ oo::define ::fivax::motion::Planner {
     # machining: the rest of the operation is posted as usual. The state
     # S(wp): off, free (posting as usual, watching), hold, plane.
     method Route {item t} {
-        if {$S(wp) eq "off"} {return {0 {}}}
         set tw [::fivax::vec::unit [lindex [my ToWork {0.0 0.0 0.0} $t] 1]]
         set positioning [expr {[lindex $item 0] eq "hole"
             || ([lindex $item 0] eq "add" && [lindex $item 1] eq "rapid")}]
@@ -240,7 +243,8 @@ oo::define ::fivax::motion::Planner {
         set S(wp) plane
         set t $S(heldAxis)
         set R [::fivax::plane::frame $t]
-        set cands [::fivax::motion::Candidates $S(ctx) $t {} [my ItemSrc [lindex $items 0]]]
+        set cands [::fivax::motion::Candidates $S(ctx) $t [::fivax::motion::InCone $S(ctx) $t] {} \
+            [my ItemSrc [lindex $items 0]]]
         lassign [::fivax::motion::Preferred $S(ctx) $cands] q1
         set moves [list [dict create kind plane matrix $R origin {0.0 0.0 0.0} \
             seq [expr {$q1 < 0 ? -1 : 1}] P {} t {} src "" tag "" note ""]]

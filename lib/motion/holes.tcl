@@ -31,15 +31,18 @@ oo::define ::fivax::motion::Planner {
     # can neither be native nor expanded here.
     method hole {P t cycle native src} {
         namespace upvar ::fivax::motion expandable expandable
-        lassign [my Route [list hole $P $t $cycle $native $src] $t] done pre
-        if {$done} {return $pre}
+        set pre {}
+        if {$S(wp) ne "off"} {
+            lassign [my Route [list hole $P $t $cycle $native $src] $t] done pre
+            if {$done} {return $pre}
+        }
         set moves [concat $pre [my flush]]
         lassign [my ToWork $P $t] P t
         set t [::fivax::vec::unit $t]
         incr S(points)
         set ctx $S(ctx)
         set refs [my LastRefs]
-        set cands [::fivax::motion::Candidates $ctx $t $refs $src]
+        set cands [::fivax::motion::Candidates $ctx $t [::fivax::motion::InCone $ctx $t] $refs $src]
         if {[my Fresh rapid]} {
             lassign [::fivax::motion::Preferred $ctx $cands] q1 q2 lab
         } else {
@@ -110,7 +113,7 @@ oo::define ::fivax::motion::Planner {
     # rotaries q1 q2 on branch lab.
     method HolePoint {P t d q1 q2 lab} {
         ::fivax::motion::Record $S(ctx) [::fivax::vec::add $P [::fivax::vec::scale $d $t]] \
-            $t $q1 $q2 $lab
+            $t $q1 $q2 $lab [::fivax::motion::InCone $S(ctx) $t]
     }
 
     # Returns the rapid moves to point record b from the last written point.

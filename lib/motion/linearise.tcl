@@ -24,18 +24,23 @@ oo::define ::fivax::motion::Planner {
     # opposite (no great circle between them), and, before it is split, a
     # move ending outside the machine's travel.
     method Linearise {a b depth src} {
-        namespace upvar ::fivax::motion maxDepth maxDepth maxPieces maxPieces \
-            retractCost retractCost
         if {$S(tol) <= 0} {return [list $b]}
+        namespace upvar ::fivax::motion retractCost retractCost
+        lassign $a ja Pa ta acta la
+        lassign $b jb Pb tb actb lb
         if {$depth == 0} {
-            ::fivax::motion::CheckFlip [lindex $a 2] [lindex $b 2] $src
+            # (axes with a positive dot product are less than 90 deg apart)
+            lassign $ta ax ay az
+            lassign $tb bx by bz
+            if {$ax * $bx + $ay * $by + $az * $bz <= 0.0} {
+                ::fivax::motion::CheckFlip $ta $tb $src
+            }
             set S(pieces) 0
         }
         set ctx $S(ctx)
-        lassign $a ja Pa - acta la
-        lassign $b jb Pb - actb lb
-        set ok [expr {[::fivax::motion::Cost $S(ms1) $S(ms2) 1 [lindex $ja 3] [lindex $ja 4] $la \
-            [lindex $jb 3] [lindex $jb 4] $lb] < $retractCost}]
+        lassign $ja - - - a1 a2
+        lassign $jb - - - b1 b2
+        set ok [expr {[::fivax::motion::Cost $S(ms1) $S(ms2) 1 $a1 $a2 $la $b1 $b2 $lb] < $retractCost}]
         set n 2
         if {$ok} {
             # First the bound (kin interpolationBound): it proves most moves
@@ -59,6 +64,7 @@ oo::define ::fivax::motion::Planner {
             lassign $jb X Y Z
             ::fivax::machine::checkLimits $S(machine) [list X $X Y $Y Z $Z] $src
         }
+        namespace upvar ::fivax::motion maxDepth maxDepth maxPieces maxPieces
         if {$depth < $maxDepth && $S(pieces) < $maxPieces} {
             incr S(pieces) $n
             try {
@@ -116,10 +122,10 @@ proc ::fivax::motion::Split {ctx a b n src} {
         foreach end [list $a $b] other [list $b $a] {
             lassign $end je P t
             if {[InCone $ctx $t]} {
-                set c [Quantize $ctx [Departure $ctx $end $other $src]]
+                set c [Quantize [dict get $ctx step] [Departure $ctx $end $other $src]]
                 if {abs($c - [lindex $je 4]) > 1e-9} {
                     set q1 [HoldTilt $ctx $t [lindex $je 3] $c]
-                    if {$q1 ne ""} {return [list [Record $ctx $P $t $q1 $c -1]]}
+                    if {$q1 ne ""} {return [list [Record $ctx $P $t $q1 $c -1 1]]}
                 }
             }
         }
@@ -131,7 +137,7 @@ proc ::fivax::motion::Split {ctx a b n src} {
         set g2 [expr {$a2 + $f * ($b2 - $a2)}]
         set t [::fivax::vec::slerp $ta $tb $f]
         lappend out [Record $ctx [::fivax::vec::lerp $Pa $Pb $f] $t \
-            {*}[Pick $ctx $t $g1 $g2 $la $lb $src]]
+            {*}[Pick $ctx $t $g1 $g2 $la $lb $src] [InCone $ctx $t]]
     }
     return $out
 }

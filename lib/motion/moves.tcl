@@ -9,36 +9,37 @@
 
 # ::fivax::motion::Record --
 #	Returns the point record of CL point P, t with rotaries q1 q2 on branch
-#	lab in context ctx; act is t itself outside the singular cone, where
-#	candidates are exact. Rotaries are rounded to the output resolution
-#	first, so that X Y Z absorb the rounding.
-proc ::fivax::motion::Record {ctx P t q1 q2 lab} {
-    set q1 [Quantize $ctx $q1]
-    set q2 [Quantize $ctx $q2]
+#	lab in context ctx; cone is InCone of t. act is t itself outside the
+#	singular cone, where candidates are exact. Rotaries are rounded to the
+#	output resolution first, so that X Y Z absorb the rounding.
+proc ::fivax::motion::Record {ctx P t q1 q2 lab cone} {
+    set step [dict get $ctx step]
+    set q [list [Quantize $step $q1] [Quantize $step $q2]]
     set model [dict get $ctx model]
-    set joints [concat [::fivax::kin::position $model $P [list $q1 $q2]] $q1 $q2]
-    if {![InCone $ctx $t]} {return [list $joints $P $t $t $lab]}
+    set joints [concat [::fivax::kin::position $model $P $q] $q]
+    if {!$cone} {return [list $joints $P $t $t $lab]}
     list $joints $P $t [lindex [::fivax::kin::forward $model $joints] 1] $lab
 }
 
 oo::define ::fivax::motion::Planner {
-    # Writes CL point (kind P t feed src) with rotaries {q1 q2} on branch
-    # lab after the last written point and returns its moves: the rapid
-    # sequence, the linearised cutting moves, or a retract, reposition and
-    # re-engage.
-    method Emit {kind P t feed src q1 q2 lab} {
+    # Writes CL point (kind P t feed src; cone: InCone of t) with rotaries
+    # {q1 q2} on branch lab after the last written point and returns its
+    # moves: the rapid sequence, the linearised cutting moves, or a
+    # retract, reposition and re-engage.
+    method Emit {kind P t feed src cone q1 q2 lab} {
         namespace upvar ::fivax::motion retractCost retractCost
         set ctx $S(ctx)
-        set b [::fivax::motion::Record $ctx $P $t $q1 $q2 $lab]
-        if {[::fivax::motion::InCone $ctx $t]} {incr S(holds)}
+        set b [::fivax::motion::Record $ctx $P $t $q1 $q2 $lab $cone]
+        if {$cone} {incr S(holds)}
         if {$S(last) eq ""} {
             set moves [my First $kind $b $feed $src]
         } elseif {$kind eq "rapid"} {
             set moves [my Transfer $S(last) $b $src]
         } else {
-            lassign [my LastRefs] a1 a2 al
+            lassign $S(last) ja - ta - al
+            lassign $ja - - - a1 a2
             if {[::fivax::motion::Cost $S(ms1) $S(ms2) 1 $a1 $a2 $al $q1 $q2 $lab] < $retractCost} {
-                my CountSwing $a2 $q2 [lindex $S(last) 2] $t
+                if {abs($q2 - $a2) > $S(swingRad)} {my CountSwing $ta $t}
                 set moves [my FeedMoves [my Linearise $S(last) $b 0 $src] $feed $src]
             } else {
                 set moves [my Retract $S(last) $b [my FeedClamp $feed] $src \
@@ -64,11 +65,12 @@ oo::define ::fivax::motion::Planner {
     method Move {kind joints write P t feed src {tag ""} {note ""}} {
         set n1 $S(n1)
         set n2 $S(n2)
-        lassign $joints mX mY mZ q1 q2
+        lassign $joints X Y Z q1 q2
         if {$S(plane) ne ""} {
-            ::fivax::machine::checkLimits $S(machine) [list X $mX Y $mY Z $mZ] $src
+            ::fivax::machine::checkLimits $S(machine) [list X $X Y $Y Z $Z] $src
         }
-        lassign [my Out $joints] X Y Z
+        # (Out returns the machine X Y Z unless in a plane or TCP mode)
+        if {$S(plane) ne "" || $S(tcp)} {lassign [my Out $joints] X Y Z}
         set i [lsearch -exact $write R]
         if {$i >= 0} {
             set write [lreplace $write $i $i {*}[expr {$S(plane) eq "" ? [list $n1 $n2] : {}}]]
@@ -143,8 +145,8 @@ oo::define ::fivax::motion::Planner {
 
     # Returns the cutting moves through the point records pts (the last
     # one the CL point, the others inserted) from the last written point,
-    # with the feed of each move (see FeedOf); a record flagged retract is
-    # reached by a retract instead.
+    # with the feed of each move (see FeedOf, which also counts dwells); a
+    # record flagged retract is reached by a retract instead.
     method FeedMoves {pts feed src} {
         set f [my FeedClamp $feed]
         set prev $S(last)
@@ -159,10 +161,8 @@ oo::define ::fivax::motion::Planner {
                 lappend moves {*}[my Retract $prev $p $f $src \
                     [::fivax::motion::LimitReason $S(ctx) $a1 $a2 $t]]
             } else {
-                set feedOf [my FeedOf $prev $p $f]
-                lappend moves [my Move feed $joints {X Y Z R} $P $t $feedOf $src \
+                lappend moves [my Move feed $joints {X Y Z R} $P $t [my FeedOf $prev $p $f] $src \
                     [expr {$i < $last ? "inserted" : ""}]]
-                my CountDwell $prev $p [lindex $feedOf 3]
             }
             set prev $p
             incr i
@@ -170,45 +170,28 @@ oo::define ::fivax::motion::Planner {
         return $moves
     }
 
-    # Adds the rotary travel of moves to the statistics.
+    # Adds the rotary travel of moves (records made by Move: axes X Y Z,
+    # then the rotaries) to the statistics.
     method Travel {moves} {
-        set n1 $S(n1)
-        set n2 $S(n2)
-        if {$S(last) eq ""} {
-            set p1 ""
-        } else {
-            lassign [lindex $S(last) 0] - - - p1 p2
-        }
+        set from [expr {$S(last) ne ""}]
+        if {$from} {lassign [lindex $S(last) 0] - - - p1 p2}
         foreach move $moves {
-            set q1 [dict get $move axes $n1]
-            set q2 [dict get $move axes $n2]
-            if {$p1 ne ""} {
-                set S(travel) [expr {$S(travel) + abs($q1 - $p1) + abs($q2 - $p2)}]
+            lassign [dict get $move axes] - - - - - - - q1 - q2
+            if {$from} {
+                # (as abs(), see Cost)
+                set S(travel) [expr {$S(travel) + ($q1 > $p1 ? $q1 - $p1 : $p1 - $q1)
+                    + ($q2 > $p2 ? $q2 - $p2 : $p2 - $q2)}]
             }
+            set from 1
             set p1 $q1
             set p2 $q2
         }
     }
 
-    # Counts a dwell swing: a cutting move from point record a to b (tip
-    # path length d, mm) that only turns the rotaries while the tip stays
-    # put (at the singular direction, where the path leaves the pole with
-    # another azimuth).
-    method CountDwell {a b d} {
-        lassign [lindex $a 0] - - - a1 a2
-        lassign [lindex $b 0] - - - b1 b2
-        set turn [expr {abs($b1 - $a1) + abs($b2 - $a2)}]
-        if {$turn > 1e-9 && $d < 1e-9} {
-            incr S(dwells)
-            set S(dwellTurn) [expr {$S(dwellTurn) + $turn}]
-        }
-    }
-
-    # Counts a singular swing: the azimuth turns from a2 to b2 by more than
-    # -swing while the CL axis turns from ta to tb by less than that.
-    method CountSwing {a2 b2 ta tb} {
-        if {abs($b2 - $a2) > $S(swingRad) && [::fivax::vec::angle $ta $tb] < $S(swingRad)} {
-            incr S(swings)
-        }
+    # Counts a singular swing: called when the azimuth of a cutting move
+    # turns by more than -swing, counts it when the CL axis turns from ta
+    # to tb by less than that.
+    method CountSwing {ta tb} {
+        if {[::fivax::vec::angle $ta $tb] < $S(swingRad)} {incr S(swings)}
     }
 }

@@ -194,9 +194,13 @@ oo::class create ::fivax::motion::Planner {
     # optimiser's window fills (see flush).
     # Errors: {FIVAX MOTION UNREACHABLE}, {FIVAX MOTION LIMIT}.
     method add {kind P t feed src} {
-        lassign [my Route [list add $kind $P $t $feed $src] $t] done pre
-        if {$done} {return $pre}
-        lassign [my ToWork $P $t] P t
+        set pre {}
+        if {$S(wp) ne "off"} {
+            lassign [my Route [list add $kind $P $t $feed $src] $t] done pre
+            if {$done} {return $pre}
+        }
+        # (ToWork maps nothing without -msys)
+        if {$S(msys)} {lassign [my ToWork $P $t] P t}
         concat $pre [my AddWork $kind $P [::fivax::vec::unit $t] $feed $src]
     }
 
@@ -294,7 +298,8 @@ oo::class create ::fivax::motion::Planner {
         namespace upvar ::fivax::motion retractCost retractCost
         set ctx $S(ctx)
         set refs [my LastRefs]
-        set cands [::fivax::motion::Candidates $ctx $t $refs $src]
+        set cone [::fivax::motion::InCone $ctx $t]
+        set cands [::fivax::motion::Candidates $ctx $t $cone $refs $src]
         if {[my Fresh $kind]} {
             set choice [::fivax::motion::Preferred $ctx $cands]
         } else {
@@ -315,16 +320,16 @@ oo::class create ::fivax::motion::Planner {
             set choice [::fivax::motion::Nearest [list $a1 $a2] $ok]
         }
         set S(pathStart) 0
-        my Emit $kind $P $t $feed $src {*}$choice
+        my Emit $kind $P $t $feed $src $cone {*}$choice
     }
 
     # Adds one CL point to the optimiser's buffer as a layer
-    # {kind P t feed src states}, states being the flat list
+    # {kind P t feed src states cone}, states being the flat list
     # {q1 q2 branch cost back ...}: cost of the best path from the last
     # written point (normalised to a minimum of 0), back the index of its
-    # predecessor in the previous layer (-1 for the first layer).
+    # predecessor in the previous layer (-1 for the first layer); cone is
+    # InCone of t.
     method Step {kind P t feed src} {
-        namespace upvar ::fivax::motion zeroCost zeroCost
         set ctx $S(ctx)
         if {[llength $S(buf)]} {
             set prev [lindex $S(buf) end 5]
@@ -335,10 +340,12 @@ oo::class create ::fivax::motion::Planner {
         }
         set refs {}
         foreach {a b lab - -} $prev {lappend refs $a $b $lab}
-        set cands [::fivax::motion::Candidates $ctx $t $refs $src]
+        set cone [::fivax::motion::InCone $ctx $t]
+        set cands [::fivax::motion::Candidates $ctx $t $cone $refs $src]
         set fresh [expr {![llength $S(buf)] && [my Fresh $kind]}]
         set S(pathStart) 0
         if {![llength $prev]} {
+            namespace upvar ::fivax::motion zeroCost zeroCost
             set states {}
             foreach {b1 b2 bl} $cands {
                 lappend states $b1 $b2 $bl [expr {[::fivax::motion::PreferCost $ctx $b1 $b2]
@@ -354,7 +361,7 @@ oo::class create ::fivax::motion::Planner {
                 }
             }
         }
-        lappend S(buf) [list $kind $P $t $feed $src $states]
+        lappend S(buf) [list $kind $P $t $feed $src $states $cone]
     }
 
     # Returns the states (see Step) of the candidate triples cands reached
@@ -421,13 +428,13 @@ oo::class create ::fivax::motion::Planner {
         set azimuths [my Departures $path $k]
         set j 0
         foreach layer [lrange $S(buf) 0 [expr {$k - 1}]] i [lrange $path 0 [expr {$k - 1}]] {
-            lassign $layer kind P t feed src states
+            lassign $layer kind P t feed src states cone
             lassign [lrange $states [expr {5 * $i}] [expr {5 * $i + 2}]] q1 q2 lab
             if {[dict exists $azimuths $j]} {
                 set q2 [dict get $azimuths $j]
                 set q1 [::fivax::motion::HoldTilt $S(ctx) $t $q1 $q2]
             }
-            lappend moves {*}[my Emit $kind $P $t $feed $src $q1 $q2 $lab]
+            lappend moves {*}[my Emit $kind $P $t $feed $src $cone $q1 $q2 $lab]
             incr j
         }
         set S(buf) [lrange $S(buf) $k end]
@@ -451,13 +458,12 @@ oo::class create ::fivax::motion::Planner {
         set out [dict create]
         set n [llength $path]
         for {set j 0} {$j < $k} {incr j} {
-            lassign [lindex $S(buf) $j] kind - t
-            if {$kind ne "rapid" || ![::fivax::motion::InCone $ctx $t]} continue
+            if {[lindex $S(buf) $j 0] ne "rapid" || ![lindex $S(buf) $j 6]} continue
             set e $j
-            while {$e < $n && [::fivax::motion::InCone $ctx [lindex $S(buf) $e 2]]} {incr e}
+            while {$e < $n && [lindex $S(buf) $e 6]} {incr e}
             if {$e >= $n} break
             # the azimuth the path leaves the cone with (as Split sees it)
-            set q2 [::fivax::motion::Quantize $ctx [::fivax::motion::Departure $ctx \
+            set q2 [::fivax::motion::Quantize [dict get $ctx step] [::fivax::motion::Departure $ctx \
                 [my PathRecord $path [expr {$e - 1}]] [my PathRecord $path $e] \
                 [lindex $S(buf) $e 4]]]
             set ok 1
