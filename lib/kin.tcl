@@ -198,17 +198,18 @@ proc ::fivax::kin::forward {model joints} {
 # ::fivax::kin::toolInMachine --
 #	Returns the tool direction in the machine frame at rotaries {q1 q2}:
 #	turned by the head axes only (table axes turn the part, not the tool),
-#	so always Z on a table-table machine.
+#	so always Z on a table-table machine. It is forward's tool axis with
+#	the table axes at their zero pose.
 proc ::fivax::kin::toolInMachine {model q} {
     lassign $q q1 q2
-    lassign [dict get $model geo] kc ux1 uy1 uz1 - - - s1 ux2 uy2 uz2 - - - s2
-    set t {0.0 0.0 1.0}
-    if {$kc == 2} {return $t}
-    set t [::fivax::vec::rotate [list $ux1 $uy1 $uz1] [expr {$s1 * $q1}] $t]
-    if {$kc == 0} {
-        set t [::fivax::vec::rotate [list $ux2 $uy2 $uz2] [expr {$s2 * $q2}] $t]
+    switch -- [lindex [dict get $model geo] 0] {
+        1 {set q2 [dict get $model z2]}
+        2 {
+            set q1 [dict get $model z1]
+            set q2 [dict get $model z2]
+        }
     }
-    return $t
+    lindex [forward $model [list 0.0 0.0 0.0 $q1 $q2]] 1
 }
 
 # ::fivax::kin::orientations --
