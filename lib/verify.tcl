@@ -137,10 +137,11 @@ proc ::fivax::verify::LineRe {re} {
 }
 
 oo::class create ::fivax::verify::Checker {
-    # S: machine, tableOffset, dialect (its table entry), names, rollover,
-    # limits, model, the modal state X Y Z q1 q2 motion (0/1) mode
-    # (direct/inverse) F, prev (the last checked block) and the
-    # statistics (see summary).
+    # S: machine, tableOffset, the dialect's comment skip word syntax
+    # (its table entry), lineRe, plainText, pi, the tables CycleG KnownG
+    # KnownLetters, rollover, axis:NAME, model, the modal state X Y Z q1
+    # q2 motion (0/1) mode (direct/inverse) F, prev (the last checked
+    # block) and the statistics (see summary).
     variable S
 
     constructor {machine opts} {
@@ -149,15 +150,24 @@ oo::class create ::fivax::verify::Checker {
         set name [dict get $opts -controller]
         if {$name eq ""} {set name [dict get $machine controller]}
         if {![dict exists $::fivax::verify::Dialects $name]} {set name fanuc}
-        set S(dialect) [dict get $::fivax::verify::Dialects $name]
-        set S(lineRe) [::fivax::verify::LineRe [dict get $S(dialect) word]]
+        set dialect [dict get $::fivax::verify::Dialects $name]
+        foreach key {comment skip word syntax} {set S($key) [dict get $dialect $key]}
+        set S(lineRe) [::fivax::verify::LineRe $S(word)]
+        # a line of plain words holds no comment and no keyword (Sinumerik's
+        # are words of two letters or more): it needs no reading but split
+        set S(plainText) [expr {$S(lineRe) ne "" && $S(syntax) ne "klartext"}]
+        set S(pi) $::fivax::num::pi
+        foreach key {CycleG KnownG KnownLetters} {set S($key) [set ::fivax::verify::$key]}
         set chain [dict get $machine chain]
-        set S(names) [lmap axis $chain {dict get $axis name}]
+        set names [lmap axis $chain {dict get $axis name}]
         set S(tcpCodes) [dict get $machine tcp_codes]
         set S(rollover) [lmap axis $chain {dict get $axis rollover}]
-        set S(limits) [lmap name $S(names) {dict get $machine limits $name}]
-        # axis:NAME -> the rotary's index in the chain
-        foreach name $S(names) i {0 1} {set S(axis:$name) $i}
+        # axis:NAME -> {key lo hi}: the rotary's modal value (q1, q2) and
+        # its limits (radians) widened by 1e-9
+        foreach name $names key {q1 q2} {
+            lassign [dict get $machine limits $name] min max
+            set S(axis:$name) [list $key [expr {$min - 1e-9}] [expr {$max + 1e-9}]]
+        }
         array set S {X {} Y {} Z {} q1 {} q2 {} motion {} mode direct F {} prev {}
             cycle 0 return 98 initial {} bottom {} R {} tcp 0 frame {} plane 17 cc {}
             checked 0 segments 0 maxPos 0.0 maxAng 0.0 maxMidPos 0.0 maxMidAng 0.0
@@ -201,31 +211,47 @@ oo::class create ::fivax::verify::Checker {
     #            are then at the hole's bottom, and the modal Z afterwards
     #            is the level the cycle returns to
     method read {line} {
-        set text $line
-        switch -exact -- [dict get $S(dialect) syntax] {
-            klartext {set text [my Klartext $text]}
-            sinumerik {set text [my Sinumerik $text]}
-        }
-        set comments {}
-        set cre [dict get $S(dialect) comment]
-        if {[string first ( $text] >= 0 || [string first ";" $text] >= 0} {
-            foreach {- a b} [regexp -all -inline -- $cre $text] {
-                lappend comments [expr {$a ne "" ? $a : $b}]
+        lassign [my Read $line 1] joints pose space limit arc block moved F pairs comments unknown hole
+        dict create block $block motion $S(motion) moved $moved joints $joints pose $pose \
+            space $space arc $arc mode $S(mode) F $F feed $S(F) words $pairs \
+            comments $comments limit $limit unknown $unknown hole $hole
+    }
+
+    # Reads one NC line as read does (see there) and returns the values of
+    # its dict as a list: joints pose space limit arc block moved F words
+    # comments unknown hole (the post's check takes the first five, and
+    # words are gathered only when wantPairs is 1).
+    method Read {line wantPairs} {
+        if {$S(plainText) && [regexp -- $S(lineRe) $line]} {
+            # plain words (every ISO block fivax writes): no comment, no keyword
+            set text $line
+            set comments {}
+            set plain 1
+        } else {
+            set text $line
+            switch -exact -- $S(syntax) {
+                klartext {set text [my Klartext $text]}
+                sinumerik {set text [my Sinumerik $text]}
             }
-            regsub -all -- $cre $text "" text
+            set comments {}
+            if {[string first ( $text] >= 0 || [string first ";" $text] >= 0} {
+                foreach {- a b} [regexp -all -inline -- $S(comment) $text] {
+                    lappend comments [expr {$a ne "" ? $a : $b}]
+                }
+                regsub -all -- $S(comment) $text "" text
+            }
+            # a line of plain words is split at its spaces
+            set plain [expr {$S(lineRe) ne "" && [regexp -- $S(lineRe) $text]}]
         }
-        # a line of plain words (every block fivax writes) is split at its spaces
-        set plain [expr {$S(lineRe) ne "" && [regexp -- $S(lineRe) $text]}]
-        if {(!$plain && [string trim $text] eq "") || [regexp -- [dict get $S(dialect) skip] $line]} {
-            return [my Still 0 $comments [my Joints] [my Pose]]
+        if {(!$plain && [string trim $text] eq "") || [regexp -- $S(skip) $line]} {
+            return [list [my Joints] [my Pose] [my Space] {} {} 0 {} "" {} $comments {} 0]
         }
         set unknown {}
         if {$plain} {
             set words [split $text " "]
         } else {
-            set re [dict get $S(dialect) word]
-            set words [regexp -all -inline -- $re $text]
-            set rest [string trim [regsub -all -- $re $text ""]]
+            set words [regexp -all -inline -- $S(word) $text]
+            set rest [string trim [regsub -all -- $S(word) $text ""]]
             if {$rest ne ""} {lappend unknown text $rest}
         }
         set pairs {}
@@ -240,7 +266,7 @@ oo::class create ::fivax::verify::Checker {
             set value [string range $word 1 end]
             if {![string is double -strict $value]} continue
             set g [expr {$value == round($value) ? int($value) : $value}]
-            if {$g in $::fivax::verify::CycleG} {
+            if {$g in $S(CycleG)} {
                 if {!$S(cycle)} {
                     set S(initial) $S(Z)
                     set S(bottom) $S(Z)
@@ -259,7 +285,8 @@ oo::class create ::fivax::verify::Checker {
             }
         }
         if {$planeSet} {
-            return [my PlaneWords [my Still 1 $comments {} {}] $words]
+            my PlaneWords $words
+            return [list "" "" [my Space] {} {} 1 {} "" {} $comments {} 0]
         }
         set hole 0
         set start [list $S(X) $S(Y) $S(Z)]
@@ -274,7 +301,7 @@ oo::class create ::fivax::verify::Checker {
                 lappend unknown text $word
                 continue
             }
-            lappend pairs $letter $x
+            if {$wantPairs} {lappend pairs $letter $x}
             # the letters with a meaning of their own first (their order
             # decides where a rotary's name is also one of them)
             switch -exact -- $letter {
@@ -316,14 +343,14 @@ oo::class create ::fivax::verify::Checker {
                 }
             }
             if {[info exists S(axis:$letter)]} {
-                set i $S(axis:$letter)
-                set q [::fivax::num::rad $x]
-                lassign [lindex $S(limits) $i] min max
-                if {$q < $min - 1e-9 || $q > $max + 1e-9} {
+                # the value in radians (num rad, written out) against the limits
+                lassign $S(axis:$letter) key lo hi
+                set q [expr {$x * $S(pi) / 180.0}]
+                if {$q < $lo || $q > $hi} {
                     incr S(limitViolations)
                     lappend limit $letter
                 }
-                set S(q[expr {$i + 1}]) $q
+                set S($key) $q
                 lappend moved $letter
                 continue
             }
@@ -341,7 +368,7 @@ oo::class create ::fivax::verify::Checker {
                         93 {set S(mode) inverse}
                         94 {set S(mode) direct}
                         default {
-                            if {$g ni $::fivax::verify::KnownG} {lappend unknown G$g $word}
+                            if {$g ni $S(KnownG)} {lappend unknown G$g $word}
                         }
                     }
                     set arcMode [expr {$S(motion) in {2 3}}]
@@ -360,7 +387,7 @@ oo::class create ::fivax::verify::Checker {
                     }
                 }
                 default {
-                    if {$letter ni $::fivax::verify::KnownLetters} {
+                    if {$letter ni $S(KnownLetters)} {
                         lappend unknown "letter $letter" $word
                     }
                 }
@@ -391,17 +418,7 @@ oo::class create ::fivax::verify::Checker {
             set joints [my Joints]
             set pose [my Pose]
         }
-        dict create block 1 motion $S(motion) moved $moved joints $joints pose $pose \
-            space [my Space] arc $arc mode $S(mode) F $F feed $S(F) words $pairs \
-            comments $comments limit $limit unknown $unknown hole $hole
-    }
-
-    # Returns the dict of read (see there) for a line that moves nothing:
-    # block (0 or 1), comments, joints and pose as given.
-    method Still {block comments joints pose} {
-        dict create block $block motion $S(motion) moved {} joints $joints pose $pose \
-            space [my Space] arc {} mode $S(mode) F "" feed $S(F) words {} \
-            comments $comments limit {} unknown {} hole 0
+        list $joints $pose [my Space] $limit $arc 1 $moved $F $pairs $comments $unknown $hole
     }
 
     # Returns the space of X Y Z now: plane, tcp or joint.
@@ -410,9 +427,9 @@ oo::class create ::fivax::verify::Checker {
     }
 
     # Reads a G68.2 block (words): the work plane's origin X Y Z and its
-    # Euler angles I J K (ZXZ); returns the read dict out as a block
-    # without motion. X Y Z are forgotten (the next ones are in the plane).
-    method PlaneWords {out words} {
+    # Euler angles I J K (ZXZ). X Y Z are forgotten (the next ones are in
+    # the plane).
+    method PlaneWords {words} {
         set v {X 0.0 Y 0.0 Z 0.0 I 0.0 J 0.0 K 0.0}
         foreach word $words {
             set letter [string index $word 0]
@@ -423,10 +440,6 @@ oo::class create ::fivax::verify::Checker {
         }
         my SetFrame zxz [list [dict get $v I] [dict get $v J] [dict get $v K]] \
             [list [dict get $v X] [dict get $v Y] [dict get $v Z]]
-        dict set out space plane
-        dict set out joints ""
-        dict set out pose ""
-        return $out
     }
 
     # Sets the work plane of angles (deg) in convention at origin; the
@@ -444,22 +457,26 @@ oo::class create ::fivax::verify::Checker {
     # SPATIAL and PLANE RESET set the state and give no block; BEGIN and
     # END PGM and cycle 9 are no blocks; a comment "; text" stays one.
     method Klartext {line} {
-        set body [string trim $line]
-        regexp {^\d+\s+(.*)$} $body -> body
-        set pl {[-+]?[0-9.]+}
-        if {[regexp {^;} $body] || [regexp {^(BEGIN|END) PGM\M} $body]
-                || [regexp {^CYCL DEF 9\.} $body]} {
-            return [expr {[string index $body 0] eq ";" ? $body : ""}]
+        if {[regexp {^\d+ L(?: \S+)*$} $line]} {
+            # numbered, single spaces (every L line fivax writes): the
+            # tokens are split at the spaces, as the general way finds them
+            set tokens [lrange [split $line " "] 2 end]
+        } else {
+            set body [string trim $line]
+            regexp {^\d+\s+(.*)$} $body -> body
+            if {[regexp {^L(\s.*)?$} $body -> rest]} {
+                set tokens [regexp -all -inline {\S+} $rest]
+            }
         }
-        if {[regexp {^L(\s.*)?$} $body -> rest]} {
+        if {[info exists tokens]} {
             set iso {}
-            foreach tok [regexp -all -inline {\S+} $rest] {
+            foreach tok $tokens {
                 if {$tok eq "FMAX"} {
                     set iso [linsert $iso 0 G0]
                 } elseif {$tok in {R0 RL RR}} {
                 } elseif {$tok eq "M91"} {
                     set iso [linsert $iso 0 G0 G53]
-                } elseif {[regexp {^F[0-9.]+$} $tok]} {
+                } elseif {[string match F* $tok] && [regexp {^F[0-9.]+$} $tok]} {
                     set iso [linsert $iso 0 G1]
                     lappend iso $tok
                 } else {
@@ -467,6 +484,11 @@ oo::class create ::fivax::verify::Checker {
                 }
             }
             return [join $iso]
+        }
+        set pl {[-+]?[0-9.]+}
+        if {[regexp {^;} $body] || [regexp {^(BEGIN|END) PGM\M} $body]
+                || [regexp {^CYCL DEF 9\.} $body]} {
+            return [expr {[string index $body 0] eq ";" ? $body : ""}]
         }
         if {[regexp "^CC\\s+(.*)$" $body -> rest]} {
             foreach tok [regexp -all -inline {\S+} $rest] {
@@ -611,29 +633,28 @@ oo::class create ::fivax::verify::Checker {
     # Returns joints j1 with each rotary that rolls over moved to the
     # value nearest its value in j0 (the way the controller turns it).
     method Rolled {j0 j1} {
-        namespace upvar ::fivax::num pi pi
         foreach i {3 4} roll $S(rollover) {
             if {$roll} {
                 set a [lindex $j0 $i]
                 set d [expr {[lindex $j1 $i] - $a}]
-                lset j1 $i [expr {$a + $d - 2.0 * $pi * round($d / (2.0 * $pi))}]
+                lset j1 $i [expr {$a + $d - 2.0 * $S(pi) * round($d / (2.0 * $S(pi)))}]
             }
         }
         return $j1
     }
 
     # Raises {FIVAX MACHINE LIMIT} with the move's FILE:LINE (machine
-    # checkLimits) when the block read as blk leaves the machine's X Y Z
-    # travel (its machine X Y Z, when known) or a rotary's limits.
-    method CheckLimits {blk line move} {
+    # checkLimits) when the block read (joints and limit as read returns
+    # them) leaves the machine's X Y Z travel (its machine X Y Z, when
+    # known) or a rotary's limits.
+    method CheckLimits {joints limit line move} {
         set values {}
-        set joints [dict get $blk joints]
         if {$joints ne ""} {
             lassign $joints x y z
             set values [list X $x Y $y Z $z]
         }
-        foreach axis [dict get $blk limit] {
-            dict set values $axis $S(q[expr {[lsearch -exact $S(names) $axis] + 1}])
+        foreach axis $limit {
+            dict set values $axis $S([lindex $S(axis:$axis) 0])
         }
         if {![llength [::fivax::machine::outside $S(machine) $values]]} return
         set where [dict get $move src]
@@ -652,10 +673,9 @@ oo::class create ::fivax::verify::Checker {
     # cannot exceed the largest deviation found so far (which is all the
     # summary keeps).
     method block {line move} {
-        set blk [my read $line]
-        my CheckLimits $blk $line $move
+        lassign [my Read $line 0] joints pose space limit arc
+        my CheckLimits $joints $limit $line $move
         set P [dict get $move P]
-        set pose [dict get $blk pose]
         if {$P eq "" || $pose eq ""} {
             if {$P eq ""} {set S(prev) {}}
             return
@@ -664,12 +684,12 @@ oo::class create ::fivax::verify::Checker {
         lassign $pose Pm tm
         set dp [::fivax::vec::dist $Pm $P]
         set angle [::fivax::vec::angle $tm $t]
-        set da [::fivax::num::deg $angle]
+        # in degrees (num deg, written out)
+        set da [expr {$angle * 180.0 / $S(pi)}]
         incr S(checked)
         if {$dp > $S(maxPos)} {set S(maxPos) $dp; set S(worst) [dict get $move src]}
         if {$da > $S(maxAng)} {set S(maxAng) $da}
-        set joints [dict get $blk joints]
-        if {[dict get $blk space] ne "joint" || [dict get $blk arc] ne ""} {
+        if {$space ne "joint" || $arc ne ""} {
             set S(prev) {}
             return
         }
@@ -681,7 +701,7 @@ oo::class create ::fivax::verify::Checker {
             set j1 [my Rolled $j0 $joints]
             lassign [::fivax::kin::interpolationBound $S(model) $j0 $j1 $P0 $P $t0 $t \
                 [expr {max($ep0, $dp)}] [expr {max($ea0, $ea)}]] bp ba
-            if {$bp > $S(maxMidPos) || [::fivax::num::deg $ba] > $S(maxMidAng)} {
+            if {$bp > $S(maxMidPos) || $ba * 180.0 / $S(pi) > $S(maxMidAng)} {
                 lassign [my interior $j0 $joints $P0 $P $t0 $t] dp2 da2
                 if {$dp2 > $S(maxMidPos)} {set S(maxMidPos) $dp2; set S(worstMid) [dict get $move src]}
                 if {$da2 > $S(maxMidAng)} {set S(maxMidAng) $da2}
