@@ -206,10 +206,11 @@ oo::class create ::fivax::nc::Writer {
                 if {!(abs($x < $lo || $x > $hi ? [set x [my Bound $name $x]] : $x) < Inf)} {
                     # (beyond MIN/MAX: the value Bound leaves, then no Inf or NaN)
                     ::fivax::Fail NC VALUE "address $name: value is not finite: $v"
-                } elseif {$kind eq "f"} {
+                } elseif {$kind eq "f" || $kind eq "F"} {
+                    # (FormatNumber's printf case, inline on the hot path)
                     set t [::format $spec $x]
                     if {[string index $t 0] eq "-" && ![string match {*[1-9]*} $t]} {
-                        set t [string range $t 1 end]
+                        set t [expr {$kind eq "F" ? "+" : ""}][string range $t 1 end]
                     }
                 } elseif {$kind eq "d"} {
                     set t [::format $spec [expr {round($x)}]]
@@ -285,8 +286,9 @@ oo::class create ::fivax::nc::Writer {
         if {![info exists Addr($name)]} {
             ::fivax::Fail NC ADDRESS "unknown address \"$name\""
         }
-        if {[lindex $Addr($name) 7] eq ""} {return $x}
-        my Bound $name $x
+        lassign $Addr($name) - - - - - lo hi
+        if {$x < $lo || $x > $hi} {return [my Bound $name $x]}
+        return $x
     }
 
     # Returns the last value written for address name ("" if none).
@@ -313,19 +315,19 @@ oo::class create ::fivax::nc::Writer {
         return
     }
 
-    # Returns x within address name's limits {min minAction max
-    # maxAction}: truncated to the bound, or as it is after a warning, or
-    # an error {FIVAX NC RANGE} for abort.
+    # Returns x, which lies below address name's lo or above its hi (the
+    # callers test that), as its limits {min minAction max maxAction}
+    # say: truncated to the bound, or as it is after a warning, or an
+    # error {FIVAX NC RANGE} for abort.
     method Bound {name x} {
-        lassign [lindex $Addr($name) 7] min minAct max maxAct
-        if {$min ne "" && $x < $min} {
+        lassign $Addr($name) - - - - - lo - limits
+        lassign $limits min minAct max maxAct
+        if {$x < $lo} {
             set bound $min
             set act $minAct
-        } elseif {$max ne "" && $x > $max} {
+        } else {
             set bound $max
             set act $maxAct
-        } else {
-            return $x
         }
         switch -- $act {
             abort {
