@@ -6,12 +6,15 @@
 #	output layer (lib/output.tcl) and the .def define the others. Pure:
 #	every method returns text; nothing here writes a file.
 #
-#	A Writer keeps per address one list {mode kind spec leader trailer limits}:
+#	A Writer keeps per address one list {mode kind spec leader trailer lo
+#	hi limits}:
 #	    mode  m = modal (written when its text changes), w = always written,
 #	          s = suppressed, W = forced once, S = suppressed once;
 #	    kind  f = printf real, F = printf real with a + flag, d = printf
 #	          integer (value rounded), s = string, a = NX &abcdef code;
 #	    spec  the printf string, or the parsed &abcdef fields;
+#	    lo hi the bounds of limits as numbers, -Inf and Inf where there
+#	          is none, so a block tests a value with two comparisons;
 #	    limits {} or {min minAction max maxAction} (NX's MIN/MAX with
 #	          abort, warning or truncate; "" for no bound).
 #	The mode is derived from the flags {base forceAlways suppressAlways
@@ -49,18 +52,22 @@ proc ::fivax::nc::create {args} {
 }
 
 oo::class create ::fivax::nc::Writer {
-    # cfg: the option dict. Addr($name), Flags($name), Last($name) (text
-    # of the last word written), Val($name) (its value), names (definition
-    # order), seq: {on next start incr max}.
-    variable cfg Addr Flags Last Val names sep eol seqOn seqNext
+    # Addr($name), Flags($name), Last($name) (text of the last word
+    # written), Val($name) (its value); the rest in S (few declared
+    # variables: TclOO resolves every local of a method against each
+    # declared name on every call): S(cfg) the option dict, S(names) the
+    # address names in definition order; S(sep), S(eol), S(seqOn),
+    # S(seqNext), S(seqIncr), S(seqMax): the options and the numbering
+    # state, out of S(cfg) for the hot path.
+    variable S Addr Flags Last Val
 
     constructor {opts} {
-        set cfg $opts
-        set names {}
+        set S(cfg) $opts
+        set S(names) {}
         array set Addr {}
-        my Apply $cfg
+        my Apply $S(cfg)
         # The nameless address: literal text (template "strings"), always written.
-        set Addr() {w s {} {} {} {}}
+        set Addr() {w s {} {} {} -Inf Inf {}}
         set Flags() {always 0 0 {}}
         set Last() ""
         set Val() ""
@@ -70,7 +77,7 @@ oo::class create ::fivax::nc::Writer {
     # Changes options after creation; with none, returns the option dict.
     # Numbering restarts at -seq-start when it is given.
     method configure {args} {
-        if {![llength $args]} {return $cfg}
+        if {![llength $args]} {return $S(cfg)}
         set table $::fivax::nc::Options
         if {[llength $args] % 2} {
             ::fivax::opts::check $table [lindex $args end] "" "nc configure"
@@ -80,9 +87,9 @@ oo::class create ::fivax::nc::Writer {
         foreach {opt value} $args {
             dict set given $opt [::fivax::opts::check $table $opt $value "nc configure"]
         }
-        set cfg [dict merge $cfg $given]
+        set S(cfg) [dict merge $S(cfg) $given]
         my Apply $given
-        return $cfg
+        return $S(cfg)
     }
 
     # Adds or changes address name. Options: -leader L (default for a new
@@ -97,7 +104,7 @@ oo::class create ::fivax::nc::Writer {
             ::fivax::Fail NC OPTION "wrong # args: should be \"address name ?-option value ...?\""
         }
         if {[info exists Addr($name)]} {
-            lassign $Addr($name) mode kind spec leader trailer limits
+            lassign $Addr($name) mode kind spec leader trailer - - limits
             lassign $Flags($name) base fa sa once
             set fmt [lindex $spec end]
         } else {
@@ -111,7 +118,7 @@ oo::class create ::fivax::nc::Writer {
             lassign {off 0 0 {}} base fa sa once
             set Last($name) ""
             set Val($name) ""
-            lappend names $name
+            lappend S(names) $name
         }
         foreach {opt v} $args {
             switch -- $opt {
@@ -132,9 +139,12 @@ oo::class create ::fivax::nc::Writer {
             }
         }
         lassign [::fivax::nc::ParseFormat $fmt] kind spec
+        lassign $limits lo - hi
+        if {$lo eq ""} {set lo -Inf}
+        if {$hi eq ""} {set hi Inf}
         set Flags($name) [list $base $fa $sa $once]
         set Addr($name) [list [::fivax::nc::Mode $base $fa $sa $once] $kind $spec $leader \
-            $trailer $limits]
+            $trailer $lo $hi $limits]
         return $name
     }
 
@@ -164,12 +174,13 @@ oo::class create ::fivax::nc::Writer {
     }
 
     # Returns the block for words (flat list name value ...), in that
-    # order, prefixed with N<seq> when numbering is on; "" when every word
-    # was left out (unchanged modal word, suppressed, or empty value).
-    # Only words written update the modal memory. The empty name "" stands
-    # for literal text, written as it is every time.
+    # order, prefixed with N<seq> when numbering is on and numbered is 1
+    # (numbered 0: the words of a line built around them, never numbered);
+    # "" when every word was left out (unchanged modal word, suppressed,
+    # or empty value). Only words written update the modal memory. The
+    # empty name "" stands for literal text, written as it is every time.
     # Errors: {FIVAX NC ADDRESS} for an undefined address name.
-    method block {words} {
+    method block {words {numbered 1}} {
         set out {}
         set upd {}
         set once {}
@@ -177,40 +188,40 @@ oo::class create ::fivax::nc::Writer {
             if {![info exists Addr($name)]} {
                 ::fivax::Fail NC ADDRESS "unknown address \"$name\""
             }
-            lassign $Addr($name) mode kind spec leader trailer limits
-            if {$mode eq "s"} continue
-            if {$mode eq "S"} {lappend once $name; continue}
+            lassign $Addr($name) mode kind spec leader trailer lo hi
+            switch -- $mode {
+                s continue
+                S {lappend once $name; continue}
+            }
             # Number in, decimal: Tcl reads "017" as octal, so integers and
-            # strings go through scan; plain doubles are used as they are.
+            # strings go through scan; plain doubles are used as they are
+            # (x is v itself, or what scan read).
             if {$kind eq "s"} {
                 set t $v
                 if {[string index $t 0] eq "-" && [string is double -strict $t] && $t == 0} {
                     set t [string range $t 1 end]
                 }
-            } else {
-                set num 1
-                if {[string is double -strict $v] && ![string is entier -strict $v]} {
-                    set x $v
-                } elseif {[scan $v %lf%c x junk] != 1} {
-                    # not a number: an already formatted code, or nothing
-                    if {$v eq ""} continue
-                    set num 0
-                }
-                if {$num && $limits ne ""} {set x [my Bound $name $x $limits]}
-                if {!$num} {
-                    set t $v
-                } elseif {!(abs($x) < Inf)} {
+            } elseif {[string is double -strict [set x $v]] && ![string is entier -strict $v]
+                    || [scan $v %lf%c x junk] == 1} {
+                if {!(abs($x < $lo || $x > $hi ? [set x [my Bound $name $x]] : $x) < Inf)} {
+                    # (beyond MIN/MAX: the value Bound leaves, then no Inf or NaN)
                     ::fivax::Fail NC VALUE "address $name: value is not finite: $v"
-                } elseif {$kind eq "f"} {
+                } elseif {$kind eq "f" || $kind eq "F"} {
+                    # (FormatNumber's printf case, inline on the hot path)
                     set t [::format $spec $x]
                     if {[string index $t 0] eq "-" && ![string match {*[1-9]*} $t]} {
-                        set t [string range $t 1 end]
+                        set t [expr {$kind eq "F" ? "+" : ""}][string range $t 1 end]
                     }
                 } elseif {$kind eq "d"} {
                     set t [::format $spec [expr {round($x)}]]
                 } else {
                     set t [::fivax::nc::FormatNumber $kind $spec $x]
                 }
+            } elseif {$v eq ""} {
+                continue
+            } else {
+                # not a number: an already formatted code
+                set t $v
             }
             if {$mode eq "m"} {
                 if {$t eq $Last($name)} continue
@@ -226,7 +237,8 @@ oo::class create ::fivax::nc::Writer {
         }
         if {[llength $once]} {my ConsumeOnce $once}
         if {![llength $out]} {return ""}
-        my Numbered [join $out $sep]
+        if {!$numbered} {return [join $out $S(sep)]$S(eol)}
+        my Numbered [join $out $S(sep)]
     }
 
     # Returns text as one block, prefixed with N<seq> when numbering is on.
@@ -255,9 +267,9 @@ oo::class create ::fivax::nc::Writer {
             off {set new 0}
             default {::fivax::Fail NC VALUE "bad state \"$state\": must be on or off"}
         }
-        set old [expr {$seqOn ? "on" : "off"}]
-        set seqOn $new
-        dict set cfg -sequence $new
+        set old [expr {$S(seqOn) ? "on" : "off"}]
+        set S(seqOn) $new
+        dict set S(cfg) -sequence $new
         return $old
     }
 
@@ -274,9 +286,9 @@ oo::class create ::fivax::nc::Writer {
         if {![info exists Addr($name)]} {
             ::fivax::Fail NC ADDRESS "unknown address \"$name\""
         }
-        set limits [lindex $Addr($name) 5]
-        if {$limits eq ""} {return $x}
-        my Bound $name $x $limits
+        lassign $Addr($name) - - - - - lo hi
+        if {$x < $lo || $x > $hi} {return [my Bound $name $x]}
+        return $x
     }
 
     # Returns the last value written for address name ("" if none).
@@ -290,7 +302,7 @@ oo::class create ::fivax::nc::Writer {
     # Forgets the modal memory of all addresses, or of the named ones, so
     # the next block writes them again.
     method reset {{which *}} {
-        if {$which eq "*"} {set which $names}
+        if {$which eq "*"} {set which $S(names)}
         foreach name $which {
             if {![info exists Last($name)]} {
                 ::fivax::Fail NC ADDRESS "unknown address \"$name\""
@@ -303,26 +315,26 @@ oo::class create ::fivax::nc::Writer {
         return
     }
 
-    # Returns x within address name's limits {min minAction max
-    # maxAction}: truncated to the bound, or as it is after a warning, or
-    # an error {FIVAX NC RANGE} for abort.
-    method Bound {name x limits} {
+    # Returns x, which lies below address name's lo or above its hi (the
+    # callers test that), as its limits {min minAction max maxAction}
+    # say: truncated to the bound, or as it is after a warning, or an
+    # error {FIVAX NC RANGE} for abort.
+    method Bound {name x} {
+        lassign $Addr($name) - - - - - lo - limits
         lassign $limits min minAct max maxAct
-        if {$min ne "" && $x < $min} {
+        if {$x < $lo} {
             set bound $min
             set act $minAct
-        } elseif {$max ne "" && $x > $max} {
+        } else {
             set bound $max
             set act $maxAct
-        } else {
-            return $x
         }
         switch -- $act {
             abort {
                 ::fivax::Fail NC RANGE "address $name: $x is beyond its limit $bound"
             }
             warning {
-                set warn [dict get $cfg -warn]
+                set warn [dict get $S(cfg) -warn]
                 if {[llength $warn]} {{*}$warn "address $name: $x is beyond its limit $bound"}
                 return $x
             }
@@ -334,10 +346,12 @@ oo::class create ::fivax::nc::Writer {
     method Apply {opts} {
         dict for {opt v} $opts {
             switch -- $opt {
-                -separator {set sep $v}
-                -eol {set eol $v}
-                -sequence {set seqOn $v}
-                -seq-start {set seqNext $v}
+                -separator {set S(sep) $v}
+                -eol {set S(eol) $v}
+                -sequence {set S(seqOn) $v}
+                -seq-start {set S(seqNext) $v}
+                -seq-incr {set S(seqIncr) $v}
+                -seq-max {set S(seqMax) $v}
             }
         }
     }
@@ -346,25 +360,28 @@ oo::class create ::fivax::nc::Writer {
     # number within -seq-max (then the number advances); past -seq-max
     # numbering stops with one warning: never a repeated N.
     method Numbered {text} {
-        if {!$seqOn} {return $text$eol}
-        set n $seqNext
-        if {$n > [dict get $cfg -seq-max]} {
-            set seqOn 0
-            set warn [dict get $cfg -warn]
+        if {!$S(seqOn)} {return $text$S(eol)}
+        set n $S(seqNext)
+        if {$n > $S(seqMax)} {
+            set S(seqOn) 0
+            set warn [dict get $S(cfg) -warn]
             if {[llength $warn]} {
-                {*}$warn "sequence numbers past [dict get $cfg -seq-max] (the largest the\
+                {*}$warn "sequence numbers past [dict get $S(cfg) -seq-max] (the largest the\
                     .def's SEQUENCE allows): the rest of the program is not numbered"
             }
-            return $text$eol
+            return $text$S(eol)
         }
-        set seqNext [expr {$n + [dict get $cfg -seq-incr]}]
+        set S(seqNext) [expr {$n + $S(seqIncr)}]
         lassign $Addr(N) mode kind spec leader trailer
-        if {$kind eq "d"} {
+        if {$spec eq "%d"} {
+            # (what format %d writes of an integer, without the call)
+            set word $leader$n$trailer
+        } elseif {$kind eq "d"} {
             set word $leader[::format $spec $n]$trailer
         } else {
             set word $leader[::fivax::nc::FormatValue $kind $spec $n]$trailer
         }
-        return $word$sep$text$eol
+        return $word$S(sep)$text$S(eol)
     }
 
     # Clears the once requests of the addresses used by a block.

@@ -180,65 +180,78 @@ proc ::fivax::output::create {machine args} {
 }
 
 oo::class create ::fivax::output::Writer {
-    # nc: the block Writer; cfg: options; dialect: its table entry;
-    # rotaries: {name chainIndex rollover} in output order (the 4th axis
-    # word first); length: the H register to activate with the next Z
-    # move (0: none); tcpArmed: 1 when TCP comes on with the next block
-    # that writes X, Y or Z; tcpOn: TCP is active; feedMode: inverse or
-    # direct of the last feed block; cycle: the G code of the active
-    # canned cycle (0: none); pendingTool: the Klartext tool whose TOOL
-    # CALL waits for its spindle speed; planeOn: a work plane is active;
-    # register: the length register of the tool in the spindle; program:
-    # the Klartext program name; arcPlane: the plane of the last arc;
-    # atSafe: nothing has moved since the last Z up in machine coordinates.
+    # The state is one array S (one declared variable: TclOO resolves every
+    # local of a method against each declared name on every call). S(nc):
+    # the block Writer; S(cfg): options; S(dialect): its table entry;
+    # S(rotaries): {name chainIndex rollover} in output order (the 4th
+    # axis word first); S(length): the H register to activate with the
+    # next Z move (0: none); S(tcpArmed): 1 when TCP comes on with the
+    # next block that writes X, Y or Z; S(tcpOn): TCP is active;
+    # S(feedMode): inverse or direct of the last feed block; S(cycle): the
+    # G code of the active canned cycle (0: none); S(pendingTool): the
+    # Klartext tool whose TOOL CALL waits for its spindle speed;
+    # S(planeOn): a work plane is active; S(register): the length register
+    # of the tool in the spindle; S(program): the Klartext program name;
+    # S(arcPlane): the plane of the last arc; S(atSafe): nothing has moved
+    # since the last Z up in machine coordinates; S(machine): the machine.
     # After G80 Z and the motion code are
     # written again: the tool stands at the initial level, and the motion
     # mode is stated afresh.
-    variable nc cfg dialect machine rotaries length tcpArmed tcpOn feedMode cycle \
-        pendingTool planeOn register program arcPlane atSafe
+    # Fixed per writer, for the per-point path: S(klartext) (the dialect's
+    # syntax is Klartext), S(tcpInBlock) (TCP comes on inside a motion
+    # block: Fanuc G43.4 H), S(xyzAddr) {X addr Y addr Z addr} and
+    # S(rotAddr) {name addr step ...} (the rotaries in output order; step:
+    # the output resolution in degrees a rotary that rolls over is rounded
+    # to, "" for one that does not): the addresses of the axes in the
+    # dialect.
+    variable S
 
     constructor {aMachine opts} {
-        set machine $aMachine
-        set cfg $opts
-        set dialect [dict get $::fivax::output::Dialects [dict get $cfg -controller]]
-        set names [::fivax::machine::rotaryNames $machine]
+        set S(machine) $aMachine
+        set S(cfg) $opts
+        set S(dialect) [dict get $::fivax::output::Dialects [dict get $S(cfg) -controller]]
+        set names [::fivax::machine::rotaryNames $S(machine)]
         set i 0
-        foreach axis [dict get $machine chain] {
+        foreach axis [dict get $S(machine) chain] {
             set slot [lsearch -exact $names [dict get $axis name]]
             lset names $slot [list [dict get $axis name] $i [dict get $axis rollover]]
             incr i
         }
-        set rotaries $names
-        set length 0
-        set tcpArmed 0
-        set tcpOn 0
-        set feedMode direct
-        set cycle 0
-        set pendingTool ""
-        set planeOn 0
-        set register 0
-        set arcPlane 17
-        set atSafe 0
-        set program PART
-        set nc [::fivax::nc::create -sequence 0 -warn [dict get $cfg -warn]]
-        my Define [dict get $cfg -def]
+        set S(rotaries) $names
+        set S(length) 0
+        set S(tcpArmed) 0
+        set S(tcpOn) 0
+        set S(feedMode) direct
+        set S(cycle) 0
+        set S(pendingTool) ""
+        set S(planeOn) 0
+        set S(register) 0
+        set S(arcPlane) 17
+        set S(atSafe) 0
+        set S(program) PART
+        set S(klartext) [expr {[dict get $S(dialect) syntax] eq "klartext"}]
+        set tcp [dict get $S(dialect) tcp]
+        set S(tcpInBlock) [expr {$tcp ne "" && [dict get $tcp on] eq "G43.4"}]
+        set S(nc) [::fivax::nc::create -sequence 0 -warn [dict get $S(cfg) -warn]]
+        my Define [dict get $S(cfg) -def]
+        my AxisAddresses
     }
 
     destructor {
-        if {[info exists nc]} {$nc destroy}
+        if {[info exists S(nc)]} {$S(nc) destroy}
     }
 
     # Defines the addresses of the .def def on the block writer, resolves
     # their leaders and applies the decimal and numbering options. Klartext
     # numbers every line from 0 in steps of 1, without a leader.
     method Define {def} {
-        set defined [::fivax::def::configure $nc $def]
+        set defined [::fivax::def::configure $S(nc) $def]
         foreach name $::fivax::output::Addresses {
             if {$name ni $defined} {
                 ::fivax::Fail OUTPUT DEF "the post's .def has no ADDRESS $name"
             }
         }
-        lassign [lmap r $rotaries {lindex $r 0}] r4 r5
+        lassign [lmap r $S(rotaries) {lindex $r 0}] r4 r5
         set leaders [dict create X X Y Y Z Z N N fourth_axis $r4 fifth_axis $r5]
         dict for {name a} [dict get $def addresses] {
             if {[dict get $a leader_expr] eq ""} continue
@@ -248,52 +261,64 @@ oo::class create ::fivax::output::Writer {
                     \[[dict get $a leader_expr]\] (the output layer knows\
                     \[\$mom_sys_leader(NAME)\] for [join [dict keys $leaders] {, }])"
             }
-            $nc address $name -leader [dict get $leaders $key]
+            $S(nc) address $name -leader [dict get $leaders $key]
         }
         foreach {opt addresses sign} {-decimals {X Y Z I J K} "" -decimals {KX KY KZ KCX KCY KCZ} +
                 -angle-decimals {fourth_axis fifth_axis} "" -angle-decimals {K4 K5} +
                 -feed-decimals {F KF} "" -inverse-decimals F_inv ""} {
-            set d [dict get $cfg $opt]
+            set d [dict get $S(cfg) $opt]
             if {$d eq ""} continue
-            foreach name $addresses {$nc address $name -format %${sign}.${d}f}
+            foreach name $addresses {$S(nc) address $name -format %${sign}.${d}f}
         }
-        if {[dict get $dialect syntax] eq "klartext"} {
-            $nc address N -leader "" -max {999999999 abort}
-            $nc configure -seq-start 0 -seq-incr 1 -seq-max 999999999
-            $nc sequence on
+        if {$S(klartext)} {
+            $S(nc) address N -leader "" -max {999999999 abort}
+            $S(nc) configure -seq-start 0 -seq-incr 1 -seq-max 999999999
+            $S(nc) sequence on
             return
         }
         set seq [dict get $def sequence]
-        set on [dict get $cfg -sequence]
+        set on [dict get $S(cfg) -sequence]
         if {$on eq ""} {set on [expr {[llength $seq] > 0}]}
-        $nc sequence [expr {$on ? "on" : "off"}]
+        $S(nc) sequence [expr {$on ? "on" : "off"}]
         foreach opt {-seq-start -seq-incr} {
-            if {[dict get $cfg $opt] ne ""} {$nc configure $opt [dict get $cfg $opt]}
+            if {[dict get $S(cfg) $opt] ne ""} {$S(nc) configure $opt [dict get $S(cfg) $opt]}
+        }
+    }
+
+    # Sets S(xyzAddr) and S(rotAddr) (see the state) from the dialect and
+    # the formats of the rotary addresses.
+    method AxisAddresses {} {
+        set prefix [expr {$S(klartext) ? "K" : ""}]
+        set S(xyzAddr) [list X ${prefix}X Y ${prefix}Y Z ${prefix}Z]
+        set S(rotAddr) {}
+        foreach r $S(rotaries) addr [expr {$S(klartext) ? {K4 K5} : {fourth_axis fifth_axis}}] {
+            lassign $r name - roll
+            lappend S(rotAddr) $name $addr [expr {$roll ? 10.0 ** -[$S(nc) decimals $addr] : ""}]
         }
     }
 
     # Returns the rotary output resolution (degrees) the planner rounds
     # to: one unit of the last decimal of the fourth axis's format.
     method angleStep {} {
-        set addr [expr {[dict get $dialect syntax] eq "klartext" ? "K4" : "fourth_axis"}]
-        expr {10.0 ** -[$nc decimals $addr]}
+        set addr [expr {$S(klartext) ? "K4" : "fourth_axis"}]
+        expr {10.0 ** -[$S(nc) decimals $addr]}
     }
 
     # Returns {length angle}: the output resolution of X (file units) and
     # of the rotaries (degrees), one unit of their last decimal.
     method resolution {} {
-        set addr [expr {[dict get $dialect syntax] eq "klartext" ? "KX" : "X"}]
-        list [expr {10.0 ** -[$nc decimals $addr]}] [my angleStep]
+        set addr [expr {$S(klartext) ? "KX" : "X"}]
+        list [expr {10.0 ** -[$S(nc) decimals $addr]}] [my angleStep]
     }
 
     # Returns what the dialect can write, for the planner: a dict of
     # controller, inverse (G93 exists), plane (a work plane exists), arcPlanes (the
     # planes of native arcs), helix (1: helical arcs), tcp (TCP mode on).
     method capabilities {} {
-        dict create controller [dict get $cfg -controller] inverse [dict get $dialect inverse] \
-            plane [expr {[dict get $dialect plane] ne "" && ![dict get $cfg -tcp]}] \
-            arcPlanes [dict get $dialect arcs planes] helix [dict get $dialect arcs helix] \
-            tcp [dict get $cfg -tcp]
+        dict create controller [dict get $S(cfg) -controller] inverse [dict get $S(dialect) inverse] \
+            plane [expr {[dict get $S(dialect) plane] ne "" && ![dict get $S(cfg) -tcp]}] \
+            arcPlanes [dict get $S(dialect) arcs planes] helix [dict get $S(dialect) arcs helix] \
+            tcp [dict get $S(cfg) -tcp]
     }
 
     # Returns the program-start lines: the dialect's program header
@@ -301,17 +326,17 @@ oo::class create ::fivax::output::Writer {
     # cutter, length or cycle compensation active), units, absolute mode,
     # feed mode and plane, then the machine's work offset.
     method start {comment {name PART}} {
-        lassign [dict get $dialect units] mm inch
-        set unit [expr {[dict get $machine units] eq "inch" ? $inch : $mm}]
-        if {[dict get $dialect syntax] eq "klartext"} {
-            set program [regsub -all {[^A-Za-z0-9_]} $name _]
-            if {$program eq ""} {set program PART}
-            return [list [$nc line "BEGIN PGM $program $unit"] [my comment $comment]]
+        lassign [dict get $S(dialect) units] mm inch
+        set unit [expr {[dict get $S(machine) units] eq "inch" ? $inch : $mm}]
+        if {$S(klartext)} {
+            set S(program) [regsub -all {[^A-Za-z0-9_]} $name _]
+            if {$S(program) eq ""} {set S(program) PART}
+            return [list [$S(nc) line "BEGIN PGM $S(program) $unit"] [my comment $comment]]
         }
         set lines {}
-        if {[dict get $dialect percent]} {lappend lines %}
-        set format [dict get $dialect program]
-        set number [dict get $cfg -program]
+        if {[dict get $S(dialect) percent]} {lappend lines %}
+        set format [dict get $S(dialect) program]
+        set number [dict get $S(cfg) -program]
         set text [my Sanitise $comment]
         if {$format ne ""} {
             set line [format $format $number]
@@ -321,21 +346,21 @@ oo::class create ::fivax::output::Writer {
             if {$text eq ""} {set text "PROGRAM $number"}
             lappend lines [my comment $text]
         }
-        if {[llength [dict get $dialect safety]]} {
-            lappend lines [$nc block [dict get $dialect safety]]
+        if {[llength [dict get $S(dialect) safety]]} {
+            lappend lines [$S(nc) block [dict get $S(dialect) safety]]
         }
-        lappend lines [$nc block [list G_units $unit G_mode 90 G_feed 94 G_plane 17]] \
-            [$nc block [list G_wcs [dict get $machine work_offset]]]
+        lappend lines [$S(nc) block [list G_units $unit G_mode 90 G_feed 94 G_plane 17]] \
+            [$S(nc) block [list G_wcs [dict get $S(machine) work_offset]]]
     }
 
     # Returns text as one comment line in the dialect's style (G-code:
     # never numbered; Klartext: numbered, as every line is).
     method comment {text} {
         set text [my Sanitise $text]
-        switch -exact -- [dict get $dialect comment] {
+        switch -exact -- [dict get $S(dialect) comment] {
             paren {return ($text)}
             semicolon {return "; $text"}
-            numbered {return [$nc line "; $text"]}
+            numbered {return [$S(nc) line "; $text"]}
         }
     }
 
@@ -348,15 +373,15 @@ oo::class create ::fivax::output::Writer {
     # again after a tool change.
     method toolChange {number adjust} {
         set lines [my safeZ]
-        switch -exact -- [dict get $dialect length] {
-            G43 {lappend lines [$nc block [list T $number M 6]]}
-            D {lappend lines [$nc block [list T $number M 6 D 1]]}
-            call {set pendingTool $number}
+        switch -exact -- [dict get $S(dialect) length] {
+            G43 {lappend lines [$S(nc) block [list T $number M 6]]}
+            D {lappend lines [$S(nc) block [list T $number M 6 D 1]]}
+            call {set S(pendingTool) $number}
         }
-        $nc reset
-        set register [expr {[dict get $dialect length] eq "G43" ? $adjust : 0}]
-        set length $register
-        set tcpArmed [dict get $cfg -tcp]
+        $S(nc) reset
+        set S(register) [expr {[dict get $S(dialect) length] eq "G43" ? $adjust : 0}]
+        set S(length) $S(register)
+        set S(tcpArmed) [dict get $S(cfg) -tcp]
         return $lines
     }
 
@@ -367,29 +392,29 @@ oo::class create ::fivax::output::Writer {
     # written Z is forgotten: the next Z is in the work frame.
     # Nothing when nothing has moved since the last one.
     method safeZ {} {
-        if {$atSafe} {return {}}
-        set atSafe 1
+        if {$S(atSafe)} {return {}}
+        set S(atSafe) 1
         set off [my TcpOff]
         set lines [concat [my CycleOff] $off]
-        set z [dict get $machine tool_change_z]
-        switch -exact -- [dict get $dialect machineZ] {
+        set z [dict get $S(machine) tool_change_z]
+        switch -exact -- [dict get $S(dialect) machineZ] {
             G53 {
-                set length 0
-                $nc force once {G_motion Z}
+                set S(length) 0
+                $S(nc) force once {G_motion Z}
                 # (Fanuc's TCP off is G49 in a block of its own)
-                set g49 [expr {[llength $off] && [dict get $dialect tcp] ne "" ? {} : {G_length 49}}]
-                lappend lines [$nc block [list G_motion 0 {*}$g49 G_machine 53 Z $z]]
+                set g49 [expr {[llength $off] && [dict get $S(dialect) tcp] ne "" ? {} : {G_length 49}}]
+                lappend lines [$S(nc) block [list G_motion 0 {*}$g49 G_machine 53 Z $z]]
             }
             SUPA {
-                $nc force once {G_motion Z}
-                lappend lines [$nc block [list G_motion 0 "" SUPA Z $z D 0]]
+                $S(nc) force once {G_motion Z}
+                lappend lines [$S(nc) block [list G_motion 0 "" SUPA Z $z D 0]]
             }
             M91 {
-                $nc force once KZ
+                $S(nc) force once KZ
                 lappend lines [my Klartext [list KZ $z] "R0 FMAX M91"]
             }
         }
-        $nc reset [expr {[dict get $dialect syntax] eq "klartext" ? "KZ" : "Z"}]
+        $S(nc) reset [expr {$S(klartext) ? "KZ" : "Z"}]
         return $lines
     }
 
@@ -398,63 +423,63 @@ oo::class create ::fivax::output::Writer {
     method spindle {speed direction} {
         set m [expr {$direction eq "CCLW" ? 4 : 3}]
         set speed [expr {round($speed)}]
-        if {[dict get $dialect syntax] eq "klartext"} {
+        if {$S(klartext)} {
             # the S of TOOL CALL is text: the .def's MIN/MAX of S bound it here
-            set speed [expr {round([$nc limit S $speed])}]
-            set call [expr {$pendingTool ne "" ? "TOOL CALL $pendingTool Z" : "TOOL CALL Z"}]
-            set pendingTool ""
-            return [concat [list [$nc line "$call S$speed"]] [my KlartextM [list M_spindle $m]]]
+            set speed [expr {round([$S(nc) limit S $speed])}]
+            set call [expr {$S(pendingTool) ne "" ? "TOOL CALL $S(pendingTool) Z" : "TOOL CALL Z"}]
+            set S(pendingTool) ""
+            return [concat [list [$S(nc) line "$call S$speed"]] [my KlartextM [list M_spindle $m]]]
         }
-        concat [my CycleOff] [list [$nc block [list S $speed M_spindle $m]]]
+        concat [my CycleOff] [list [$S(nc) block [list S $speed M_spindle $m]]]
     }
 
     # Returns the spindle-off block.
     method spindleOff {} {
-        if {[dict get $dialect syntax] eq "klartext"} {return [my KlartextM {M_spindle 5}]}
-        concat [my CycleOff] [list [$nc block {M_spindle 5}]]
+        if {$S(klartext)} {return [my KlartextM {M_spindle 5}]}
+        concat [my CycleOff] [list [$S(nc) block {M_spindle 5}]]
     }
 
     # Returns the coolant-on block for mode (MIST: M7, else M8).
     method coolant {mode} {
         set m [expr {$mode eq "MIST" ? 7 : 8}]
-        if {[dict get $dialect syntax] eq "klartext"} {return [my KlartextM [list M_coolant $m]]}
-        list [$nc block [list M_coolant $m]]
+        if {$S(klartext)} {return [my KlartextM [list M_coolant $m]]}
+        list [$S(nc) block [list M_coolant $m]]
     }
 
     # Returns the coolant-off block.
     method coolantOff {} {
-        if {[dict get $dialect syntax] eq "klartext"} {return [my KlartextM {M_coolant 9}]}
-        list [$nc block {M_coolant 9}]
+        if {$S(klartext)} {return [my KlartextM {M_coolant 9}]}
+        list [$S(nc) block {M_coolant 9}]
     }
 
     # Returns the program stop block (optional: M1, else M0; Klartext STOP).
     method stop {optional} {
-        if {[dict get $dialect syntax] eq "klartext"} {
-            return [list [$nc line [expr {$optional ? "L M1" : "STOP"}]]]
+        if {$S(klartext)} {
+            return [list [$S(nc) line [expr {$optional ? "L M1" : "STOP"}]]]
         }
-        concat [my CycleOff] [list [$nc block [list M [expr {$optional ? 1 : 0}]]]]
+        concat [my CycleOff] [list [$S(nc) block [list M [expr {$optional ? 1 : 0}]]]]
     }
 
     # Returns the dwell blocks for seconds (G4 P or F in the dialect's
     # unit; Klartext cycle 9).
     method dwell {seconds} {
-        if {[dict get $dialect dwell] eq "cycl9"} {
+        if {[dict get $S(dialect) dwell] eq "cycl9"} {
             # the time is text: bounded by the MIN/MAX of the seconds address P_s
-            return [list [$nc line "CYCL DEF 9.0 DWELL TIME"] \
-                [$nc line "CYCL DEF 9.1 DWELL [::fivax::num::fixed [$nc limit P_s $seconds] 3]"]]
+            return [list [$S(nc) line "CYCL DEF 9.0 DWELL TIME"] \
+                [$S(nc) line "CYCL DEF 9.1 DWELL [::fivax::num::fixed [$S(nc) limit P_s $seconds] 3]"]]
         }
-        concat [my CycleOff] [list [$nc block [concat {G_dwell 4} [my DwellWords $seconds]]]]
+        concat [my CycleOff] [list [$S(nc) block [concat {G_dwell 4} [my DwellWords $seconds]]]]
     }
 
     # Returns the words of a dwell time of seconds in the dialect's unit.
     method DwellWords {seconds} {
-        set addr [dict get $dialect dwell]
+        set addr [dict get $S(dialect) dwell]
         list $addr [expr {$addr eq "P_ms" ? $seconds * 1000.0 : $seconds}]
     }
 
     # Returns 1 when the dialect has the canned cycle of NX cycle event.
     method canCycle {event} {
-        dict exists $dialect cycles $event
+        dict exists $S(dialect) cycles $event
     }
 
     # Returns the canned-cycle cancel block (G80) when a cycle is active.
@@ -466,44 +491,38 @@ oo::class create ::fivax::output::Writer {
     # active. After a canned cycle the tool stands at the initial level,
     # not at the last written Z: Z is written again.
     method CycleOff {} {
-        if {!$cycle} {return {}}
-        set cycle 0
-        $nc reset {Z G_motion}
-        list [$nc block {G_cycle 80}]
+        if {!$S(cycle)} {return {}}
+        set S(cycle) 0
+        $S(nc) reset {Z G_motion}
+        list [$S(nc) block {G_cycle 80}]
     }
 
     # Returns the lines that end TCP mode when it is on (none for Fanuc:
     # the G49 of the next Z up ends G43.4).
     method TcpOff {} {
-        set tcpArmed 0
-        if {!$tcpOn} {return {}}
-        set tcpOn 0
-        if {[dict get $dialect tcp] eq ""} {
-            return [list [$nc line M[lindex [dict get $machine tcp_codes] 1]]]
+        set S(tcpArmed) 0
+        if {!$S(tcpOn)} {return {}}
+        set S(tcpOn) 0
+        if {[dict get $S(dialect) tcp] eq ""} {
+            return [list [$S(nc) line M[lindex [dict get $S(machine) tcp_codes] 1]]]
         }
-        lmap text [dict get $dialect tcp off] {$nc line $text}
+        lmap text [dict get $S(dialect) tcp off] {$S(nc) line $text}
     }
 
     # Returns the lines that start TCP mode before a block writing any of
     # X Y Z in axes when TCP is armed, and {} (Fanuc's G43.4 goes into
     # that block itself: see move).
     method TcpOn {axes} {
-        if {!$tcpArmed || ![llength [lmap a {X Y Z} {if {$a in $axes} {set a} else continue}]]
-                || [my TcpInBlock]} {
+        if {!$S(tcpArmed) || ![llength [lmap a {X Y Z} {if {$a in $axes} {set a} else continue}]]
+                || $S(tcpInBlock)} {
             return {}
         }
-        set tcpArmed 0
-        set tcpOn 1
-        if {[dict get $dialect tcp] eq ""} {
-            return [list [$nc line M[lindex [dict get $machine tcp_codes] 0]]]
+        set S(tcpArmed) 0
+        set S(tcpOn) 1
+        if {[dict get $S(dialect) tcp] eq ""} {
+            return [list [$S(nc) line M[lindex [dict get $S(machine) tcp_codes] 0]]]
         }
-        lmap text [dict get $dialect tcp on] {$nc line $text}
-    }
-
-    # Returns 1 when TCP comes on inside a motion block (Fanuc G43.4 H).
-    method TcpInBlock {} {
-        set tcp [dict get $dialect tcp]
-        expr {$tcp ne "" && [dict get $tcp on] eq "G43.4"}
+        lmap text [dict get $S(dialect) tcp on] {$S(nc) line $text}
     }
 
     # Returns the block of a hole record (kind cycle, see ::fivax::motion
@@ -511,30 +530,30 @@ oo::class create ::fivax::output::Writer {
     # the bottom, R, Q (peck) or P (dwell), F; the next ones of the same
     # cycle with what changed.
     method Cycle {rec} {
-        set atSafe 0
+        set S(atSafe) 0
         set axes [dict get $rec axes]
         set event [dict get $rec event]
         # a deep or chip-breaking drill without a peck depth drills in one go
         if {$event in {drill_deep drill_break_chip} && [dict get $rec step] <= 0} {
             set event drill
         }
-        set code [dict get $dialect cycles $event]
+        set code [dict get $S(dialect) cycles $event]
         set lines {}
-        if {$code != $cycle} {
+        if {$code != $S(cycle)} {
             set lines [my CycleOff]
-            set cycle $code
-            $nc force once {G_cycle G_return Z R F Q}
+            set S(cycle) $code
+            $S(nc) force once {G_cycle G_return Z R F Q}
         }
         set words {}
-        if {$arcPlane != 17} {
+        if {$S(arcPlane) != 17} {
             # after an arc in G18 or G19: the cycle drills along Z again
             lappend words G_plane 17
-            set arcPlane 17
+            set S(arcPlane) 17
         }
         lappend words G_return 98 G_cycle $code
-        if {$feedMode eq "inverse"} {
+        if {$S(feedMode) eq "inverse"} {
             lappend words G_feed 94
-            set feedMode direct
+            set S(feedMode) direct
         }
         lappend words X [dict get $axes X] Y [dict get $axes Y] Z [dict get $axes Z] \
             R [dict get $rec r]
@@ -545,17 +564,17 @@ oo::class create ::fivax::output::Writer {
             lappend words {*}[my DwellWords [dict get $rec delay]]
         }
         lappend words F [dict get $rec rate]
-        lappend lines [$nc block $words]
+        lappend lines [$S(nc) block $words]
     }
 
     # Returns INSERT text as an NC line when it reads as NC words of the
     # dialect (see NotWords) or -insert is verbatim; else as a comment,
     # with a warning.
     method literal {text} {
-        if {[dict get $cfg -insert] eq "verbatim"} {return [list $text]}
+        if {[dict get $S(cfg) -insert] eq "verbatim"} {return [list $text]}
         set why [my NotWords $text]
         if {$why eq ""} {return [list $text]}
-        set warn [dict get $cfg -warn]
+        set warn [dict get $S(cfg) -warn]
         if {[llength $warn]} {
             {*}$warn "INSERT text written as a comment: $why (-insert verbatim writes it as it is)"
         }
@@ -567,10 +586,10 @@ oo::class create ::fivax::output::Writer {
     # upper-case letter and a number, the letter one of the machine's
     # axes or the dialect's letters.
     method NotWords {text} {
-        if {![llength [dict get $dialect letters]]} {
-            return "[dict get $cfg -controller] takes no NC words from the CL"
+        if {![llength [dict get $S(dialect) letters]]} {
+            return "[dict get $S(cfg) -controller] takes no NC words from the CL"
         }
-        set letters [concat {X Y Z} [lmap r $rotaries {lindex $r 0}] [dict get $dialect letters]]
+        set letters [concat {X Y Z} [lmap r $S(rotaries) {lindex $r 0}] [dict get $S(dialect) letters]]
         set words [regsub -all {\([^()]*\)} $text " "]
         if {[string first ( $words] >= 0 || [string first ) $words] >= 0} {
             return "unbalanced parentheses"
@@ -593,7 +612,8 @@ oo::class create ::fivax::output::Writer {
     # in machine units and degrees (a rotary that rolls over written in
     # [0, 360)); arcs, work planes, holes and dwells by their kind.
     method move {rec} {
-        switch -- [dict get $rec kind] {
+        set kind [dict get $rec kind]
+        switch -- $kind {
             cycle {return [my Cycle $rec]}
             dwell {return [my dwell [dict get $rec seconds]]}
             arc {return [my Arc $rec]}
@@ -606,56 +626,54 @@ oo::class create ::fivax::output::Writer {
             # rotaries are the control's)
             return {}
         }
-        set atSafe 0
-        set lines [my CycleOff]
-        set isFeed [expr {[dict get $rec kind] eq "feed"}]
-        set axes [dict get $rec axes]
-        lappend lines {*}[my TcpOn $write]
-        if {[dict get $dialect syntax] eq "klartext"} {
+        set S(atSafe) 0
+        set lines {}
+        if {$S(cycle)} {set lines [my CycleOff]}
+        set isFeed [expr {$kind eq "feed"}]
+        if {$S(tcpArmed)} {lappend lines {*}[my TcpOn $write]}
+        if {$S(klartext)} {
             return [concat $lines [my KlartextMove $rec $isFeed]]
         }
         set words [list G_motion $isFeed]
-        if {$tcpArmed && [my TcpInBlock]
+        if {$S(tcpArmed) && $S(tcpInBlock)
                 && [llength [lmap a {X Y Z} {if {$a in $write} {set a} else continue}]]} {
             # TCP on (Fanuc): G43.4 H with the first X Y Z block
-            lappend words G_length 43.4 H $length
-            set length 0
-            set tcpArmed 0
-            set tcpOn 1
-        } elseif {$length && "Z" in $write} {
-            lappend words G_length 43 H $length
-            set length 0
+            lappend words G_length 43.4 H $S(length)
+            set S(length) 0
+            set S(tcpArmed) 0
+            set S(tcpOn) 1
+        } elseif {$S(length) && "Z" in $write} {
+            lappend words G_length 43 H $S(length)
+            set S(length) 0
         }
         if {$isFeed} {
             set mode [dict get $rec mode]
             set inverse [expr {$mode eq "inverse"}]
             lappend words G_feed [expr {$inverse ? 93 : 94}]
-            if {!$inverse && $feedMode eq "inverse"} {$nc force once F}
-            set feedMode [expr {$inverse ? "inverse" : "direct"}]
+            if {!$inverse && $S(feedMode) eq "inverse"} {$S(nc) force once F}
+            set S(feedMode) [expr {$inverse ? "inverse" : "direct"}]
         }
-        lappend words {*}[my AxisWords $rec {X Y Z} {fourth_axis fifth_axis}]
+        lappend words {*}[my AxisWords $rec]
         if {$isFeed} {
             lappend words [expr {$inverse ? "F_inv" : "F"}] [dict get $rec rate]
         }
-        lappend lines [$nc block $words]
+        lappend lines [$S(nc) block $words]
     }
 
     # Returns the address words of the axes in rec's write list, by the
-    # addresses of X Y Z (xyz) and of the two rotaries (rot).
-    method AxisWords {rec xyz rot} {
+    # dialect's addresses (S(xyzAddr), S(rotAddr)).
+    method AxisWords {rec} {
         set write [dict get $rec write]
         set axes [dict get $rec axes]
         set words {}
-        foreach name {X Y Z} addr $xyz {
+        foreach {name addr} $S(xyzAddr) {
             if {$name in $write} {lappend words $addr [dict get $axes $name]}
         }
-        foreach r $rotaries addr $rot {
-            lassign $r name - roll
+        foreach {name addr step} $S(rotAddr) {
             if {$name ni $write} continue
             set deg [::fivax::num::deg [dict get $axes $name]]
-            if {$roll} {
+            if {$step ne ""} {
                 # wrap the written value (rounded first, so 359.9996 is 0.000)
-                set step [expr {10.0 ** -[$nc decimals $addr]}]
                 set deg [expr {round($deg / $step) * $step}]
                 set deg [expr {fmod(fmod($deg, 360.0) + 360.0, 360.0)}]
             }
@@ -668,14 +686,15 @@ oo::class create ::fivax::output::Writer {
     # R0, and FMAX or F (the feed in mm/min; a feed block after a rapid
     # states F again). The waiting TOOL CALL comes first.
     method KlartextMove {rec isFeed} {
-        set lines [my ToolCall]
-        set words [my AxisWords $rec {KX KY KZ} {K4 K5}]
+        set lines {}
+        if {$S(pendingTool) ne ""} {set lines [my ToolCall]}
+        set words [my AxisWords $rec]
         if {$isFeed} {
-            if {$feedMode ne "feed"} {$nc force once KF}
-            set feedMode feed
-            set tail "R0 [my Quiet [list KF [dict get $rec rate]]]"
+            if {$S(feedMode) ne "feed"} {$S(nc) force once KF}
+            set S(feedMode) feed
+            set tail "R0 [$S(nc) block [list KF [dict get $rec rate]] 0]"
         } else {
-            set feedMode rapid
+            set S(feedMode) rapid
             set tail "R0 FMAX"
         }
         lappend lines [my Klartext $words [string trimright $tail]]
@@ -684,38 +703,27 @@ oo::class create ::fivax::output::Writer {
     # Returns the numbered Klartext line "L <words> tail" (the words
     # through the modal memory; nothing when no axis changes).
     method Klartext {words tail} {
-        set text [my Quiet $words]
+        set text [$S(nc) block $words 0]
         if {$text eq ""} {return {}}
-        $nc line "L $text $tail"
-    }
-
-    # Returns the text of the address words through the modal memory,
-    # without a sequence number.
-    method Quiet {words} {
-        set old [$nc sequence off]
-        try {
-            $nc block $words
-        } finally {
-            $nc sequence $old
-        }
+        $S(nc) line "L $text $tail"
     }
 
     # Returns the Klartext line "L M.." of the M words (through the modal
     # memory: nothing when they are in effect already).
     method KlartextM {words} {
-        set text [my Quiet $words]
+        set text [$S(nc) block $words 0]
         if {$text eq ""} {return {}}
         # (the tool comes first: M8 before its TOOL CALL would run the
         # coolant through the tool change)
         set lines [my ToolCall]
-        lappend lines [$nc line "L $text"]
+        lappend lines [$S(nc) line "L $text"]
     }
 
     # Returns the waiting Klartext TOOL CALL (without a speed), or nothing.
     method ToolCall {} {
-        if {$pendingTool eq ""} {return {}}
-        set line [$nc line "TOOL CALL $pendingTool Z"]
-        set pendingTool ""
+        if {$S(pendingTool) eq ""} {return {}}
+        set line [$S(nc) line "TOOL CALL $S(pendingTool) Z"]
+        set S(pendingTool) ""
         list $line
     }
 
@@ -724,38 +732,38 @@ oo::class create ::fivax::output::Writer {
     # the plane's normal, feed): G17..G19 G2/G3 with the end and the
     # centre from the start as I J K; Klartext CC and C DR-/DR+.
     method Arc {rec} {
-        set atSafe 0
+        set S(atSafe) 0
         set lines [concat [my CycleOff] [my ToolCall]]
         set plane [dict get $rec plane]
         lassign [dict get $rec start] sx sy sz
         lassign [dict get $rec center] cx cy cz
         set dir [dict get $rec dir]
-        if {[dict get $dialect syntax] eq "klartext"} {
-            lappend lines [$nc line "CC [my Quiet [list KCX $cx KCY $cy]]"]
-            if {$feedMode ne "feed"} {$nc force once KF}
-            set feedMode feed
-            $nc force once {KX KY}
-            set xy [my Quiet [list KX [dict get $rec axes X] KY [dict get $rec axes Y]]]
+        if {$S(klartext)} {
+            lappend lines [$S(nc) line "CC [$S(nc) block [list KCX $cx KCY $cy] 0]"]
+            if {$S(feedMode) ne "feed"} {$S(nc) force once KF}
+            set S(feedMode) feed
+            $S(nc) force once {KX KY}
+            set xy [$S(nc) block [list KX [dict get $rec axes X] KY [dict get $rec axes Y]] 0]
             set words [list C $xy DR[expr {$dir == 2 ? "-" : "+"}] R0 \
-                [my Quiet [list KF [dict get $rec rate]]]]
-            lappend lines [$nc line [join [lsearch -all -inline -not -exact $words ""]]]
+                [$S(nc) block [list KF [dict get $rec rate]] 0]]
+            lappend lines [$S(nc) line [join [lsearch -all -inline -not -exact $words ""]]]
             return $lines
         }
         set offsets [dict get {17 {I J} 18 {I K} 19 {J K}} $plane]
         # centre offsets from the start as written (rounded)
-        set d [$nc decimals X]
+        set d [$S(nc) decimals X]
         set words [list G_plane $plane G_motion $dir]
-        set arcPlane $plane
-        if {$feedMode eq "inverse"} {
+        set S(arcPlane) $plane
+        if {$S(feedMode) eq "inverse"} {
             lappend words G_feed 94
-            $nc force once F
-            set feedMode direct
+            $S(nc) force once F
+            set S(feedMode) direct
         }
-        lappend words {*}[my AxisWords $rec {X Y Z} {fourth_axis fifth_axis}]
+        lappend words {*}[my AxisWords $rec]
         set start [lmap v [list $sx $sy $sz] {::fivax::num::fixed $v $d}]
-        set radius [expr {[dict get $cfg -arc-words] eq "r" ? [my ArcRadius $rec $start] : ""}]
+        set radius [expr {[dict get $S(cfg) -arc-words] eq "r" ? [my ArcRadius $rec $start] : ""}]
         if {$radius ne ""} {
-            $nc force once R
+            $S(nc) force once R
             lappend words R $radius
         } else {
             foreach name {I J K} s $start c [list $cx $cy $cz] {
@@ -763,7 +771,7 @@ oo::class create ::fivax::output::Writer {
             }
         }
         lappend words F [dict get $rec rate]
-        lappend lines [$nc block $words]
+        lappend lines [$S(nc) block $words]
     }
 
     # Returns the signed radius R of arc record rec from the written start:
@@ -792,7 +800,7 @@ oo::class create ::fivax::output::Writer {
     # Klartext PLANE SPATIAL .. TURN MB MAX FMAX SEQ. The rotaries turn
     # without being written: their modal memory is cleared.
     method PlaneOn {rec} {
-        set form [dict get $dialect plane]
+        set form [dict get $S(dialect) plane]
         set angles [::fivax::plane::angles [dict get $::fivax::output::PlaneAngles $form] \
             [dict get $rec matrix]]
         lassign [dict get $rec origin] ox oy oz
@@ -800,38 +808,38 @@ oo::class create ::fivax::output::Writer {
         switch -exact -- $form {
             g68.2 {
                 lassign $angles i j k
-                lappend lines [$nc block [list G_rot 68.2 X $ox Y $oy Z $oz E_i $i E_j $j E_k $k]] \
-                    [$nc block {G_tilt 53.1}]
-                set length $register
+                lappend lines [$S(nc) block [list G_rot 68.2 X $ox Y $oy Z $oz E_i $i E_j $j E_k $k]] \
+                    [$S(nc) block {G_tilt 53.1}]
+                set S(length) $S(register)
             }
             cycle800 {
                 set a [lmap v [concat [list $ox $oy $oz] $angles] {::fivax::num::fixed $v 4}]
                 lassign $a x y z aa bb cc
-                lappend lines [$nc line "CYCLE800(1,\"[dict get $machine swivel_record]\",0,57,$x,$y,$z,$aa,$bb,$cc,0,0,0,[dict get $rec seq],100,1)"] \
-                    [$nc block {D 1}]
+                lappend lines [$S(nc) line "CYCLE800(1,\"[dict get $S(machine) swivel_record]\",0,57,$x,$y,$z,$aa,$bb,$cc,0,0,0,[dict get $rec seq],100,1)"] \
+                    [$S(nc) block {D 1}]
             }
             spatial {
                 lassign $angles a b c
-                lappend lines [$nc line "PLANE SPATIAL [my Quiet [list SPA $a SPB $b SPC $c]] TURN MB MAX FMAX SEQ[expr {[dict get $rec seq] < 0 ? "-" : "+"}]"]
+                lappend lines [$S(nc) line "PLANE SPATIAL [$S(nc) block [list SPA $a SPB $b SPC $c] 0] TURN MB MAX FMAX SEQ[expr {[dict get $rec seq] < 0 ? "-" : "+"}]"]
             }
         }
-        set planeOn 1
-        $nc reset
+        set S(planeOn) 1
+        $S(nc) reset
         return $lines
     }
 
     # Returns the blocks that end the work plane: Z up, then G69,
     # CYCLE800() or PLANE RESET STAY.
     method PlaneOff {} {
-        if {!$planeOn} {return {}}
-        set planeOn 0
+        if {!$S(planeOn)} {return {}}
+        set S(planeOn) 0
         set lines [my safeZ]
-        switch -exact -- [dict get $dialect plane] {
-            g68.2 {lappend lines [$nc block {G_rot 69}]}
-            cycle800 {lappend lines [$nc line "CYCLE800()"]}
-            spatial {lappend lines [$nc line "PLANE RESET STAY"]}
+        switch -exact -- [dict get $S(dialect) plane] {
+            g68.2 {lappend lines [$S(nc) block {G_rot 69}]}
+            cycle800 {lappend lines [$S(nc) line "CYCLE800()"]}
+            spatial {lappend lines [$S(nc) line "PLANE RESET STAY"]}
         }
-        $nc reset
+        $S(nc) reset
         return $lines
     }
 
@@ -841,24 +849,23 @@ oo::class create ::fivax::output::Writer {
     # % where the dialect has it.
     method end {} {
         set lines [concat [my PlaneOff] [my safeZ]]
-        set klartext [expr {[dict get $dialect syntax] eq "klartext"}]
-        if {[dict get $machine home_rotaries]} {
-            if {$klartext} {
-                $nc force once {K4 K5}
+        if {[dict get $S(machine) home_rotaries]} {
+            if {$S(klartext)} {
+                $S(nc) force once {K4 K5}
                 lappend lines [my Klartext {K4 0.0 K5 0.0} "R0 FMAX"]
             } else {
-                $nc force once {G_motion fourth_axis fifth_axis}
-                lappend lines [$nc block {G_motion 0 fourth_axis 0.0 fifth_axis 0.0}]
+                $S(nc) force once {G_motion fourth_axis fifth_axis}
+                lappend lines [$S(nc) block {G_motion 0 fourth_axis 0.0 fifth_axis 0.0}]
             }
         }
-        if {$klartext} {
-            lassign [dict get $dialect units] mm inch
-            set unit [expr {[dict get $machine units] eq "inch" ? $inch : $mm}]
-            return [concat $lines [my KlartextM {M_spindle 5 M_coolant 9}] [list [$nc line "L M30"] \
-                [$nc line "END PGM $program $unit"]]]
+        if {$S(klartext)} {
+            lassign [dict get $S(dialect) units] mm inch
+            set unit [expr {[dict get $S(machine) units] eq "inch" ? $inch : $mm}]
+            return [concat $lines [my KlartextM {M_spindle 5 M_coolant 9}] [list [$S(nc) line "L M30"] \
+                [$S(nc) line "END PGM $S(program) $unit"]]]
         }
-        lappend lines [$nc block {M_spindle 5 M_coolant 9}] [$nc line M30]
-        if {[dict get $dialect percent]} {lappend lines %}
+        lappend lines [$S(nc) block {M_spindle 5 M_coolant 9}] [$S(nc) line M30]
+        if {[dict get $S(dialect) percent]} {lappend lines %}
         return $lines
     }
 
@@ -869,7 +876,7 @@ oo::class create ::fivax::output::Writer {
     method Sanitise {text} {
         set text [string map {( [ ) ] % _ \r " " \n " " \t " "} $text]
         regsub -all {[\x00-\x1f\x7f]} $text " " text
-        set active [dict get $dialect active]
+        set active [dict get $S(dialect) active]
         if {[llength $active]
                 && [regexp -nocase "^\\s*([join $active |])(\[^A-Za-z0-9_\]|\$)" $text]} {
             set text _[string trimleft $text]
