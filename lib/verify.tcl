@@ -89,6 +89,10 @@ namespace eval ::fivax::verify {
     # Letters understood besides X Y Z and the rotaries (and R, Q in a
     # canned cycle).
     variable KnownLetters {N G F S T M H O P D}
+    # Largest angle (deg) between a canned cycle's drilling direction and
+    # the tool axis in the post's blocks (the written rotaries' rounding of
+    # 0.001 deg passes, a tilted tool does not).
+    variable drillTol 0.01
 }
 
 # ::fivax::verify::create --
@@ -662,6 +666,31 @@ oo::class create ::fivax::verify::Checker {
         ::fivax::machine::checkLimits $S(machine) $values $where
     }
 
+    # Raises {FIVAX VERIFY DRILL} with the move's FILE:LINE when a canned
+    # cycle's hole (read as joints and pose {P t} in space) is not drilled
+    # along the tool axis t: the control feeds along the Z of the space,
+    # which in joint space moves the tip by forward kinematics of a unit Z
+    # joint move, in TCP space along the workpiece Z (a work plane's Z is
+    # the tool axis). Allowed: drillTol degrees.
+    method CheckDrill {joints pose space line move} {
+        lassign $pose P t
+        switch -- $space {
+            plane {return}
+            tcp {set along {0.0 0.0 1.0}}
+            joint {
+                lassign $joints x y z q1 q2
+                set along [::fivax::vec::sub \
+                    [lindex [::fivax::kin::forward $S(model) [list $x $y [expr {$z + 1.0}] $q1 $q2]] 0] $P]
+            }
+        }
+        set off [::fivax::num::deg [::fivax::vec::angle $along $t]]
+        if {$off <= $::fivax::verify::drillTol} return
+        set where [dict get $move src]
+        if {$where eq ""} {set where "NC block '$line'"}
+        ::fivax::Fail VERIFY DRILL [format "%s: the canned cycle drills along Z with the\
+            tool axis %.3f deg off it" $where $off]
+    }
+
     # Reads the NC line (the post's own block) and, when move (a motion
     # move record) carries a CL target (P, t), measures the deviation of
     # the block's pose at its end and, for joint-space cutting moves (the
@@ -673,8 +702,9 @@ oo::class create ::fivax::verify::Checker {
     # cannot exceed the largest deviation found so far (which is all the
     # summary keeps).
     method block {line move} {
-        lassign [my Read $line 0] joints pose space limit arc
+        lassign [my Read $line 0] joints pose space limit arc - - - - - - hole
         my CheckLimits $joints $limit $line $move
+        if {$hole && $pose ne ""} {my CheckDrill $joints $pose $space $line $move}
         set P [dict get $move P]
         if {$P eq "" || $pose eq ""} {
             if {$P eq ""} {set S(prev) {}}
