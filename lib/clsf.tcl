@@ -126,8 +126,7 @@ oo::class create ::fivax::clsf::Reader {
             if {[string first "\$" $text] >= 0} {
                 set text [my Join $text $first n]
             }
-            # (a line without white space has nothing to trim: the cheaper test)
-            if {![string is graph $text]} {set text [string trim $text]}
+            set text [string trim $text]
             if {$text eq ""} {continue}
             set line $n
             set rec [::fivax::clsf::parse $text $name $first]
@@ -433,15 +432,15 @@ proc ::fivax::clsf::parse {text file line} {
 #	white space it skips before a number is white space string trim
 #	removes, and %n proves nothing is left over.
 proc ::fivax::clsf::PlainGoto {rest file line} {
-    set len [string length $rest]
     if {[scan $rest %lf,%lf,%lf,%lf,%lf,%lf%n x y z i j k end] == 7} {
-        if {$end != $len || !(abs($x) < Inf && abs($y) < Inf && abs($z) < Inf)} {return {}}
         set axis [Unit $i $j $k]
         if {$axis eq ""} {return {}}
     } elseif {[scan $rest %lf,%lf,%lf%n x y z end] == 4} {
-        if {$end != $len || !(abs($x) < Inf && abs($y) < Inf && abs($z) < Inf)} {return {}}
         set axis {}
     } else {
+        return {}
+    }
+    if {$end != [string length $rest] || !(abs($x) < Inf && abs($y) < Inf && abs($z) < Inf)} {
         return {}
     }
     dict create kind GOTO file $file line $line point [list $x $y $z] axis $axis

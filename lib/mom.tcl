@@ -48,9 +48,9 @@ namespace eval ::fivax::mom {
     # value}: v sets the global name, a sets the global array name from
     # the pairs value, p sets a position (see Runtime SetPosition: name
     # is the previous {x y z i j k}, value the current one), e fires
-    # MOM_name (MOM_abort_event leaves the handler quietly). The event being fired is the variable event of
-    # the post interpreter's namespace ::fivax::mom::runtime (for
-    # MOM_ask_event_type).
+    # MOM_name (MOM_abort_event leaves the handler quietly). The event
+    # being fired is the variable event of the post interpreter's
+    # namespace ::fivax::mom::runtime (for MOM_ask_event_type).
     variable dispatch {{ops} {
         variable event
         set saved $event
@@ -379,11 +379,7 @@ oo::class create ::fivax::mom::Runtime {
     #	handlers of one record run in one crossing). Returns 1 if the post
     #	has the handler.
     method Fire {event {now 1}} {
-        if {[info exists S(has:MOM_$event)]} {
-            set has $S(has:MOM_$event)
-        } else {
-            set has [my Has MOM_$event]
-        }
+        set has [my Has MOM_$event]
         if {$has} {
             incr S(events)
             lappend S(ops) e $event {}

@@ -203,15 +203,9 @@ oo::class create ::fivax::nc::Writer {
                 }
             } elseif {[string is double -strict [set x $v]] && ![string is entier -strict $v]
                     || [scan $v %lf%c x junk] == 1} {
-                if {!(abs($x < $lo || $x > $hi ? [set x [my Bound $name $x]] : $x) < Inf)} {
-                    # (beyond MIN/MAX: the value Bound leaves, then no Inf or NaN)
+                if {$x < $lo || $x > $hi} {set x [my Bound $name $x]}
+                if {!(abs($x) < Inf)} {
                     ::fivax::Fail NC VALUE "address $name: value is not finite: $v"
-                } elseif {$kind eq "f" || $kind eq "F"} {
-                    # (FormatNumber's printf case, inline on the hot path)
-                    set t [::format $spec $x]
-                    if {[string index $t 0] eq "-" && ![string match {*[1-9]*} $t]} {
-                        set t [expr {$kind eq "F" ? "+" : ""}][string range $t 1 end]
-                    }
                 } elseif {$kind eq "d"} {
                     set t [::format $spec [expr {round($x)}]]
                 } else {
@@ -373,10 +367,7 @@ oo::class create ::fivax::nc::Writer {
         }
         set S(seqNext) [expr {$n + $S(seqIncr)}]
         lassign $Addr(N) mode kind spec leader trailer
-        if {$spec eq "%d"} {
-            # (what format %d writes of an integer, without the call)
-            set word $leader$n$trailer
-        } elseif {$kind eq "d"} {
+        if {$kind eq "d"} {
             set word $leader[::format $spec $n]$trailer
         } else {
             set word $leader[::fivax::nc::FormatValue $kind $spec $n]$trailer

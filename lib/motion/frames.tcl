@@ -46,11 +46,8 @@ oo::define ::fivax::motion::Planner {
     # move records. A native arc record (see NativeArc) where it can be
     # one, else the arc's points within tol (mm) as cutting moves.
     method arc {P0 P1 center n sense turns t feed src tol} {
-        set pre {}
-        if {$S(wp) ne "off"} {
-            lassign [my Route [list arc $P0 $P1 $center $n $sense $turns $t $feed $src $tol] $t] done pre
-            if {$done} {return $pre}
-        }
+        lassign [my Route [list arc $P0 $P1 $center $n $sense $turns $t $feed $src $tol] $t] done pre
+        if {$done} {return $pre}
         lassign [my ToWork $P0 $t] P0 tw
         lassign [my ToWork $P1 $t] P1
         lassign [my ToWork $center $n] C nw
@@ -142,11 +139,10 @@ oo::define ::fivax::motion::Planner {
     }
 
     # Routes CL item (a method call with its arguments) with tool axis t
-    # (CL frame) while watching (S(wp) not off: callers skip it then);
-    # returns {done moves}: done 1 when the item has been taken (held or
-    # posted, moves those written), done 0 when the caller posts it itself
-    # after moves (the end of a plane, or points written before a new
-    # segment is held).
+    # (CL frame); returns {done moves}: done 1 when the item has been
+    # taken (held or posted, moves those written), done 0 when the caller
+    # posts it itself after moves (the end of a plane, or points written
+    # before a new segment is held).
     #
     # A work-plane segment is a run of items with one tool axis off the
     # workpiece Z, entered by a positioning move (or the operation's
@@ -157,6 +153,7 @@ oo::define ::fivax::motion::Planner {
     # machining: the rest of the operation is posted as usual. The state
     # S(wp): off, free (posting as usual, watching), hold, plane.
     method Route {item t} {
+        if {$S(wp) eq "off"} {return {0 {}}}
         set tw [::fivax::vec::unit [lindex [my ToWork {0.0 0.0 0.0} $t] 1]]
         set positioning [expr {[lindex $item 0] eq "hole"
             || ([lindex $item 0] eq "add" && [lindex $item 1] eq "rapid")}]

@@ -29,12 +29,7 @@ oo::define ::fivax::motion::Planner {
         lassign $a ja Pa ta acta la
         lassign $b jb Pb tb actb lb
         if {$depth == 0} {
-            # (axes with a positive dot product are less than 90 deg apart)
-            lassign $ta ax ay az
-            lassign $tb bx by bz
-            if {$ax * $bx + $ay * $by + $az * $bz <= 0.0} {
-                ::fivax::motion::CheckFlip $ta $tb $src
-            }
+            ::fivax::motion::CheckFlip $ta $tb $src
             set S(pieces) 0
         }
         set ctx $S(ctx)
@@ -98,6 +93,10 @@ oo::define ::fivax::motion::Planner {
 proc ::fivax::motion::CheckFlip {ta tb src} {
     variable pi
     variable flipSlack
+    # (axes with a positive dot product are less than 90 deg apart)
+    lassign $ta ax ay az
+    lassign $tb bx by bz
+    if {$ax * $bx + $ay * $by + $az * $bz > 0.0} return
     if {[::fivax::vec::angle $ta $tb] <= $pi - $flipSlack} return
     ::fivax::Fail MOTION FLIP "$src: the tool axis turns 180 deg in one cutting move\
         (([AxisText $ta]) to ([AxisText $tb])): the way it turns is undefined;\

@@ -69,8 +69,7 @@ oo::define ::fivax::motion::Planner {
         if {$S(plane) ne ""} {
             ::fivax::machine::checkLimits $S(machine) [list X $X Y $Y Z $Z] $src
         }
-        # (Out returns the machine X Y Z unless in a plane or TCP mode)
-        if {$S(plane) ne "" || $S(tcp)} {lassign [my Out $joints] X Y Z}
+        lassign [my Out $joints] X Y Z
         set i [lsearch -exact $write R]
         if {$i >= 0} {
             set write [lreplace $write $i $i {*}[expr {$S(plane) eq "" ? [list $n1 $n2] : {}}]]

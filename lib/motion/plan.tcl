@@ -194,13 +194,9 @@ oo::class create ::fivax::motion::Planner {
     # optimiser's window fills (see flush).
     # Errors: {FIVAX MOTION UNREACHABLE}, {FIVAX MOTION LIMIT}.
     method add {kind P t feed src} {
-        set pre {}
-        if {$S(wp) ne "off"} {
-            lassign [my Route [list add $kind $P $t $feed $src] $t] done pre
-            if {$done} {return $pre}
-        }
-        # (ToWork maps nothing without -msys)
-        if {$S(msys)} {lassign [my ToWork $P $t] P t}
+        lassign [my Route [list add $kind $P $t $feed $src] $t] done pre
+        if {$done} {return $pre}
+        lassign [my ToWork $P $t] P t
         concat $pre [my AddWork $kind $P [::fivax::vec::unit $t] $feed $src]
     }
 
