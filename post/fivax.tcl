@@ -188,6 +188,7 @@ proc MOM_start_of_program {} {fivax_guard {
     set fivax(toolChanges) 0
     set fivax(positioned) 0
     set fivax(opStart) 0
+    set fivax(zeroFeed) 0
     set fivax(cycle) {}
     fivax_out [$fivax(out) start "[fivax_program_name] - [dict get $machine name]" \
         [fivax_program_name]]
@@ -342,14 +343,17 @@ proc MOM_helix_move {} {fivax_guard fivax_arc}
 proc fivax_arc {} {
     global fivax mom_prev_mcs_goto mom_mcs_goto mom_arc_center mom_arc_axis
     global mom_arc_direction mom_arc_times mom_tool_axis mom_feed_rate
+    set feed [expr {[info exists mom_feed_rate] ? $mom_feed_rate : 0.0}]
+    if {!($feed > 0) && [fivax_feed_zero $feed] eq "rapid"} {
+        error "arc at a programmed feed of 0 (rapid in NX): an arc has no rapid form, program a feed"
+    }
     set xyz {0 1 2}
     fivax_emit [$fivax(plan) arc [lmap i $xyz {set mom_prev_mcs_goto($i)}] \
         [lmap i $xyz {set mom_mcs_goto($i)}] [lmap i $xyz {set mom_arc_center($i)}] \
         [lmap i $xyz {set mom_arc_axis($i)}] \
         [expr {$mom_arc_direction eq "CLW" ? -1 : 1}] \
         [expr {[info exists mom_arc_times] ? $mom_arc_times : 0}] \
-        [lmap i $xyz {set mom_tool_axis($i)}] \
-        [expr {[info exists mom_feed_rate] ? $mom_feed_rate : 0.0}] \
+        [lmap i $xyz {set mom_tool_axis($i)}] $feed \
         [fivax_where] [dict get $fivax(settings) -arc-tol]]
 }
 
@@ -383,12 +387,36 @@ proc MOM_gohome_move {} {fivax_guard {fivax_motion rapid}}
 proc fivax_motion {kind {point ""}} {
     global fivax mom_mcs_goto mom_tool_axis mom_feed_rate
     set feed [expr {[info exists mom_feed_rate] ? $mom_feed_rate : 0.0}]
+    if {$kind eq "feed" && !($feed > 0)} {set kind [fivax_feed_zero $feed]}
     if {$point eq ""} {
         set point [list $mom_mcs_goto(0) $mom_mcs_goto(1) $mom_mcs_goto(2)]
     }
     fivax_emit [$fivax(plan) add $kind $point \
         [list $mom_tool_axis(0) $mom_tool_axis(1) $mom_tool_axis(2)] \
         $feed [fivax_where]]
+}
+
+# fivax_feed_zero --
+#	Returns the kind of a cutting move whose feed (mm/min) is not above 0:
+#	rapid when the programmed feed is 0, which in NX means rapid
+#	(nx-conventions.md, mom_programmed_feed_rate), with a warning at the
+#	first such move; an error for a negative feed or a feed per
+#	revolution with the spindle stopped (no control moves at it).
+proc fivax_feed_zero {feed} {
+    global fivax mom_programmed_feed_rate
+    set programmed [expr {[info exists mom_programmed_feed_rate] ? $mom_programmed_feed_rate : $feed}]
+    if {$programmed < 0 || $feed < 0} {
+        error "cutting move at the negative feed $programmed: program a feed above 0"
+    }
+    if {$programmed != 0} {
+        error "cutting move at a feed of 0 mm/min (a feed of $programmed per revolution\
+            with the spindle stopped): start the spindle first"
+    }
+    if {!$fivax(zeroFeed)} {
+        set fivax(zeroFeed) 1
+        fivax_warn "cutting moves at a programmed feed of 0 are written as rapids (NX: feed 0 means rapid)"
+    }
+    return rapid
 }
 
 # Drilling: the activation event keeps the cycle's data; each hole goes to
