@@ -85,6 +85,8 @@ proc fivax_log {text} {
 
 # fivax_warn -- Reports a warning with the CL position.
 proc fivax_warn {text} {
+    global fivax
+    incr fivax(warnings)
     fivax_log "warning: [fivax_where]: $text"
 }
 
@@ -130,6 +132,7 @@ proc fivax_setup {} {
     set fivax(settings) $settings
     set fivax(machine) [fivax::machine load [dict get $settings -machine]]
     set fivax(log) {}
+    set fivax(warnings) 0
     set mom_kin_machine_type 3_axis_mill
     set mom_kin_output_unit [expr {[dict get $fivax(machine) units] eq "inch" ? "IN" : "MM"}]
     set mom_kin_arc_output_mode FULL_CIRCLE
@@ -530,7 +533,7 @@ proc MOM_end_of_program {} {fivax_guard {
     fivax_emit [$fivax(plan) finish]
     fivax_out [$fivax(out) end]
     set fivax_summary [dict merge [$fivax(plan) stats] [$fivax(verify) summary] \
-        [dict create toolChanges $fivax(toolChanges)]]
+        [dict create toolChanges $fivax(toolChanges) postWarnings $fivax(warnings)]]
     MOM_output_to_listing_device "fivax summary: $fivax_summary"
     fivax_close_log
 }}

@@ -450,6 +450,8 @@ proc ::replay::Post {settings clsf chan out} {
 # ::replay::Summary -- Prints the run's figures on standard error.
 proc ::replay::Summary {stats} {
     dict with stats {}
+    # the runtime's warnings (unknown records) and the post's
+    if {[info exists postWarnings]} {incr warnings $postWarnings}
     Say [format "fivax: %d records read, %d blocks written, %d warnings" \
         $records $blocks $warnings]
     if {[info exists checked]} {
