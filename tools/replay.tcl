@@ -36,12 +36,17 @@ namespace eval ::replay {
     variable cliOptions {
         {-o text {} FILE "output NC file (default, or -: standard output)"}
         {-quiet bool 0 "" "no summary and no progress line on standard error"}
+        {-check-process {enum auto on off} auto WHEN "block check in a second process: on, off, or auto: on for a CL file of 1 MB or more with two processors or more"}
         {-help bool 0 "" "print this help"}
     }
     # Output buffer (bytes): blocks reach the destination one buffer late.
     variable bufferSize 65536
     # Shortest time between two progress lines (ms).
     variable progressMs 500
+    # Smallest CL file (bytes) -check-process auto checks in a second
+    # process (about 15k records: starting it takes about 0.1 s; the -help
+    # text says 1 MB).
+    variable checkProcessBytes 1000000
     # The run's state (see Reset).
     variable R
 }
@@ -404,13 +409,32 @@ proc ::replay::Terminal {chan} {
     expr {![catch {chan configure $chan -mode}]}
 }
 
+# ::replay::CheckProcess --
+#	Returns 1 when the block check runs in a second process: -check-process
+#	on, or auto for a CL file of checkProcessBytes or more on a machine
+#	with two processors or more (getconf tells; 1 when it cannot).
+proc ::replay::CheckProcess {when clsf} {
+    variable checkProcessBytes
+    switch -- $when {
+        on {return 1}
+        off {return 0}
+    }
+    if {$clsf eq "-" || ![file isfile $clsf] || [file size $clsf] < $checkProcessBytes} {return 0}
+    if {[catch {exec getconf _NPROCESSORS_ONLN} n] || ![string is entier -strict $n]} {return 0}
+    expr {$n >= 2}
+}
+
 # ::replay::Post --
 #	Runs the post on clsf with the job settings, writing NC text to
 #	channel chan; out is the output file as NX names it to the post (""
 #	for a stream). Returns the runtime statistics merged with the post's
 #	summary. An error that names no place gets the current CL record's
-#	FILE:LINE; one that is no fivax error is marked internal.
-proc ::replay::Post {settings clsf chan out} {
+#	FILE:LINE; one that is no fivax error is marked internal. With
+#	process 1 the post's checker runs in a second process
+#	(tools/lib/checkproc.tcl); when the post stops on an error of its
+#	own, an error that process found in an earlier block is reported
+#	instead (the post in one process would have stopped there).
+proc ::replay::Post {settings clsf chan out process} {
     variable root
     set globals [dict create fivax_settings $settings]
     if {$out ne ""} {
@@ -423,6 +447,11 @@ proc ::replay::Post {settings clsf chan out} {
         -def [file join $root post fivax.def] -channel $chan \
         -listing ::replay::Listing -globals $globals \
         -autopath [list [file join $root lib] [info library]]]
+    if {$process} {
+        set child [$rt interp]
+        $child eval [list source [file join $root tools lib checkproc.tcl]]
+        $child eval [list ::fivax::checkproc::install [info nameofexecutable] [file join $root lib]]
+    }
     try {
         set stats [$rt run $clsf]
         set child [$rt interp]
@@ -432,6 +461,13 @@ proc ::replay::Post {settings clsf chan out} {
         return $stats
     } on error {msg opts} {
         set code [dict get $opts -errorcode]
+        if {$process} {
+            set failure [[$rt interp] eval ::fivax::checkproc::failure]
+            if {[llength $failure]} {
+                lassign $failure code msg clline
+                if {$clline ne ""} {[$rt interp] eval [list set ::mom_cl_line $clline]}
+            }
+        }
         if {[lindex $code 0] ne "FIVAX" && [lindex $code 0] ne "REPLAY"} {
             set msg "internal error: $msg"
         }
@@ -511,7 +547,7 @@ proc ::replay::main {argv} {
     chan configure $R(sink) -translation lf -encoding utf-8 -buffering full \
         -buffersize $bufferSize
     try {
-        set stats [Post $settings $clsf $R(sink) $out]
+        set stats [Post $settings $clsf $R(sink) $out [CheckProcess [dict get $opts -check-process] $clsf]]
         if {[dict exists $stats limitViolations] && [dict get $stats limitViolations] > 0} {
             # A safety net: the checker refuses such a value when it is written.
             error "[dict get $stats limitViolations] values outside the machine's limits; no NC file written"
