@@ -2,7 +2,9 @@
 #	Fuzzes the command line end to end: mutates real CL files (the corpus,
 #	../shared/data/cl, and tests/data/*.cls), machine files and command
 #	lines, runs tools/replay.tcl on each case in a process of its own (with
-#	a time limit, several at once) and checks how each run ends:
+#	a time limit, several at once; a quarter of the cases with the block
+#	check in a second process, -check-process on) and checks how each run
+#	ends:
 #
 #	  posted   exit 0; every number in the NC text finite and inside the
 #	           machine's travel and rotary limits; one program of the
@@ -497,6 +499,11 @@ proc ::fuzz::MakeCase {i seed sources machines most work} {
         set controller [Pick {sinumerik heidenhain linuxcnc}]
         set args [linsert $args 0 -controller $controller]
         lappend tags controller:$controller
+    }
+    if {[Chance 0.25]} {
+        # the block check in its own process (replay -check-process)
+        set args [linsert $args 0 -check-process on]
+        lappend tags check:process
     }
     set mode [Pick {file file file file file file file stdout stdout stdin}]
     if {"-o" in $args} {set mode custom}
