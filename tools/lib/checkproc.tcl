@@ -133,12 +133,16 @@ oo::class create ::fivax::checkproc::Proxy {
 
     # Answer --
     #	Returns the checker process's next message, "" when none has come
-    #	(a non-blocking pipe) or at its end.
+    #	(a non-blocking pipe) or at its end. Once a message has begun, the
+    #	rest of it is waited for.
     method Answer {} {
         if {[gets $S(in) text] < 0} {return ""}
+        set blocking [chan configure $S(in) -blocking]
+        chan configure $S(in) -blocking 1
         while {![info complete $text] && [gets $S(in) more] >= 0} {
             append text \n $more
         }
+        chan configure $S(in) -blocking $blocking
         return $text
     }
 
@@ -158,7 +162,7 @@ oo::class create ::fivax::checkproc::Proxy {
 #	The checker process: answers the messages read from channel in on
 #	channel out, until the end of in.
 proc ::fivax::checkproc::serve {in out} {
-    chan configure $in -translation lf -encoding utf-8
+    chan configure $in -translation lf -encoding utf-8 -buffersize 65536
     chan configure $out -translation lf -encoding utf-8
     set checker ""
     set failed 0
