@@ -4,7 +4,9 @@
 #	[string is list] and dict access; it is never sourced or evaluated.
 #	Lengths stay in the file's units; angles are turned into radians.
 #	Also the one check of axis values against the machine's travel and
-#	rotary limits (outside, checkLimits), for whoever writes or reads them.
+#	rotary limits (outside, checkLimits), for whoever writes or reads them:
+#	a value within its axis's bounds (key 'bounds': the 'limits' widened
+#	by limitSlack, once per machine) is inside.
 #
 #	Errors: {FIVAX MACHINE <DETAIL>} with a message "<file>: <what>", where
 #	DETAIL is one of
@@ -209,6 +211,7 @@ proc ::fivax::machine::parse {text sourceName} {
     dict set m chain $chain
     CheckGeometry $src $chain
     dict set m limits [Limits $m]
+    dict set m bounds [Bounds [dict get $m limits]]
     return $m
 }
 
@@ -323,6 +326,17 @@ proc ::fivax::machine::Limits {m} {
         }
     }
     return $out
+}
+
+# ::fivax::machine::Bounds --
+#	Returns the limits dict (as Limits returns it) with each range widened
+#	by limitSlack: a value within its axis's bounds is inside (outside).
+proc ::fivax::machine::Bounds {limits} {
+    variable limitSlack
+    dict map {axis range} $limits {
+        lassign $range lo hi
+        list [expr {$lo - $limitSlack}] [expr {$hi + $limitSlack}]
+    }
 }
 
 # ::fivax::machine::ParseAxes --
@@ -504,15 +518,15 @@ proc ::fivax::machine::rotaryNames {machine} {
 #	axis -> value: X Y Z in the machine's units, rotaries in radians, as in
 #	a move record's axes) outside the machine's travel or rotary limits,
 #	or {} when all are inside (axes the machine does not have are ignored;
-#	a value that is not a finite number is outside).
+#	a value that is not a finite number is outside). Inside: within the
+#	machine's bounds (Bounds).
 proc ::fivax::machine::outside {machine values} {
-    variable limitSlack
-    set limits [dict get $machine limits]
+    set bounds [dict get $machine bounds]
     dict for {axis v} $values {
-        if {![dict exists $limits $axis]} continue
-        lassign [dict get $limits $axis] lo hi
-        if {!([string is double -strict $v] && $v >= $lo - $limitSlack && $v <= $hi + $limitSlack)} {
-            return [list $axis $v $lo $hi]
+        if {![dict exists $bounds $axis]} continue
+        lassign [dict get $bounds $axis] lo hi
+        if {!([string is double -strict $v] && $v >= $lo && $v <= $hi)} {
+            return [list $axis $v {*}[dict get $machine limits $axis]]
         }
     }
     return {}

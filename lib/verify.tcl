@@ -9,7 +9,7 @@
 #	tool axis (spec section 7). Two hosts share this code: the post checks
 #	each block it writes (method block, with the planner's CL target), and
 #	tools/verify.tcl checks whole NC files of any post (methods read, tip,
-#	deviation, interior); in the post's blocks a value outside the
+#	deviation, interior, drillOff); in the post's blocks a value outside the
 #	machine's travel or rotary limits is refused with the CL record's
 #	FILE:LINE (machine checkLimits). It knows nothing of how the planner
 #	chose the blocks: it depends on kin and the machine's limits only.
@@ -37,7 +37,6 @@
 namespace eval ::fivax::verify {
     namespace export create dialects
     namespace ensemble create -prefixes 0
-    namespace upvar ::fivax::num pi pi
     variable Options {
         {-table-offset {maybe vec3} {} "X Y Z"
             "workpiece-frame position of the table reference point (default: the machine's table_offset)"}
@@ -143,8 +142,8 @@ proc ::fivax::verify::LineRe {re} {
 oo::class create ::fivax::verify::Checker {
     # S: machine, tableOffset, the dialect's comment skip word syntax
     # (its table entry), lineRe, plainText, pi, the tables CycleG KnownG
-    # KnownLetters, rollover, axis:NAME, model, the modal state X Y Z q1
-    # q2 motion (0/1) mode (direct/inverse) F, prev (the last checked
+    # KnownLetters, rolling, travel, axis:NAME, model, the modal state X Y
+    # Z q1 q2 motion (0/1) mode (direct/inverse) F, prev (the last checked
     # block) and the statistics (see summary).
     variable S
 
@@ -165,12 +164,19 @@ oo::class create ::fivax::verify::Checker {
         set chain [dict get $machine chain]
         set names [lmap axis $chain {dict get $axis name}]
         set S(tcpCodes) [dict get $machine tcp_codes]
-        set S(rollover) [lmap axis $chain {dict get $axis rollover}]
-        # axis:NAME -> {key lo hi}: the rotary's modal value (q1, q2) and
-        # its limits (radians) widened by 1e-9
+        # rolling: the indices in a joint vector of the rotaries that roll over
+        set S(rolling) {}
+        foreach axis $chain i {3 4} {
+            if {[dict get $axis rollover]} {lappend S(rolling) $i}
+        }
+        # the machine's bounds (its travel and limits widened by machine
+        # outside's slack): travel {Xlo Xhi Ylo Yhi Zlo Zhi}, and axis:NAME
+        # -> {key lo hi}: the rotary's modal value (q1, q2) and its bounds
+        # (radians)
+        set bounds [dict get $machine bounds]
+        set S(travel) [concat {*}[lmap axis {X Y Z} {dict get $bounds $axis}]]
         foreach name $names key {q1 q2} {
-            lassign [dict get $machine limits $name] min max
-            set S(axis:$name) [list $key [expr {$min - 1e-9}] [expr {$max + 1e-9}]]
+            set S(axis:$name) [list $key {*}[dict get $bounds $name]]
         }
         array set S {X {} Y {} Z {} q1 {} q2 {} motion {} mode direct F {} prev {}
             cycle 0 return 98 initial {} bottom {} R {} tcp 0 frame {} plane 17 cc {}
@@ -226,10 +232,10 @@ oo::class create ::fivax::verify::Checker {
     # comments unknown hole (the post's check takes the first five, and
     # words are gathered only when wantPairs is 1).
     method Read {line wantPairs} {
+        set comments {}
         if {$S(plainText) && [regexp -- $S(lineRe) $line]} {
             # plain words (every ISO block fivax writes): no comment, no keyword
             set text $line
-            set comments {}
             set plain 1
         } else {
             set text $line
@@ -237,7 +243,6 @@ oo::class create ::fivax::verify::Checker {
                 klartext {set text [my Klartext $text]}
                 sinumerik {set text [my Sinumerik $text]}
             }
-            set comments {}
             if {[string first ( $text] >= 0 || [string first ";" $text] >= 0} {
                 foreach {- a b} [regexp -all -inline -- $S(comment) $text] {
                     lappend comments [expr {$a ne "" ? $a : $b}]
@@ -248,7 +253,7 @@ oo::class create ::fivax::verify::Checker {
             set plain [expr {$S(lineRe) ne "" && [regexp -- $S(lineRe) $text]}]
         }
         if {(!$plain && [string trim $text] eq "") || [regexp -- $S(skip) $line]} {
-            return [list [my Joints] [my Pose] [my Space] {} {} 0 {} "" {} $comments {} 0]
+            return [list {*}[my State] {} {} 0 {} "" {} $comments {} 0]
         }
         set unknown {}
         if {$plain} {
@@ -262,35 +267,38 @@ oo::class create ::fivax::verify::Checker {
         set moved {}
         set limit {}
         set F ""
-        # G codes first: they decide what the axis words mean
+        # G codes first: they decide what the axis words mean (most
+        # blocks have none)
         set machineFrame 0
         set planeSet 0
         set dwell 0
-        foreach word [lsearch -all -inline -glob $words G*] {
-            set value [string range $word 1 end]
-            if {![string is double -strict $value]} continue
-            set g [expr {$value == round($value) ? int($value) : $value}]
-            if {$g in $S(CycleG)} {
-                if {!$S(cycle)} {
-                    set S(initial) $S(Z)
-                    set S(bottom) $S(Z)
+        if {[string first G $text] >= 0} {
+            foreach word [lsearch -all -inline -glob $words G*] {
+                set value [string range $word 1 end]
+                if {![string is double -strict $value]} continue
+                set g [expr {$value == round($value) ? int($value) : $value}]
+                if {$g in $S(CycleG)} {
+                    if {!$S(cycle)} {
+                        set S(initial) $S(Z)
+                        set S(bottom) $S(Z)
+                    }
+                    set S(cycle) 1
+                } elseif {$g in {98 99}} {
+                    set S(return) $g
+                } elseif {$g in {0 1 2 3 80}} {
+                    set S(cycle) 0
+                } elseif {$g == 53} {
+                    set machineFrame 1
+                } elseif {$g == 68.2} {
+                    set planeSet 1
+                } elseif {$g == 4} {
+                    set dwell 1
                 }
-                set S(cycle) 1
-            } elseif {$g in {98 99}} {
-                set S(return) $g
-            } elseif {$g in {0 1 2 3 80}} {
-                set S(cycle) 0
-            } elseif {$g == 53} {
-                set machineFrame 1
-            } elseif {$g == 68.2} {
-                set planeSet 1
-            } elseif {$g == 4} {
-                set dwell 1
             }
         }
         if {$planeSet} {
             my PlaneWords $words
-            return [list "" "" [my Space] {} {} 1 {} "" {} $comments {} 0]
+            return [list {*}[my State] {} {} 1 {} "" {} $comments {} 0]
         }
         set hole 0
         set start [list $S(X) $S(Y) $S(Z)]
@@ -298,6 +306,7 @@ oo::class create ::fivax::verify::Checker {
         set radius ""
         set centreGiven 0
         set arcMode [expr {$S(motion) in {2 3}}]
+        set cycle $S(cycle)
         foreach word $words {
             set letter [string index $word 0]
             set x [string range $word 1 end]
@@ -312,18 +321,18 @@ oo::class create ::fivax::verify::Checker {
                 X - Y - Z {
                     if {$machineFrame} {
                         set S($letter) ""
-                    } elseif {$S(cycle) && $letter eq "Z"} {
+                    } elseif {$cycle && $letter eq "Z"} {
                         # in a canned cycle Z is the hole's bottom
                         set S(bottom) $x
                     } else {
                         set S($letter) $x
                     }
-                    if {$S(cycle)} {set hole 1}
+                    if {$cycle} {set hole 1}
                     lappend moved $letter
                     continue
                 }
                 R {
-                    if {$S(cycle)} {
+                    if {$cycle} {
                         set S(R) $x
                         set hole 1
                         continue
@@ -336,7 +345,7 @@ oo::class create ::fivax::verify::Checker {
                 }
                 Q {
                     # the peck depth: the hole ends at its bottom all the same
-                    if {$S(cycle)} continue
+                    if {$cycle} continue
                 }
                 I - J - K {
                     if {$arcMode} {
@@ -414,20 +423,13 @@ oo::class create ::fivax::verify::Checker {
         if {$hole} {
             set z $S(Z)
             set S(Z) $S(bottom)
-            set joints [my Joints]
-            set pose [my Pose]
+            set state [my State]
             # back to the initial level (G98) or the R plane (G99)
             set S(Z) [expr {$S(return) == 99 ? $S(R) : $z}]
         } else {
-            set joints [my Joints]
-            set pose [my Pose]
+            set state [my State]
         }
-        list $joints $pose [my Space] $limit $arc 1 $moved $F $pairs $comments $unknown $hole
-    }
-
-    # Returns the space of X Y Z now: plane, tcp or joint.
-    method Space {} {
-        expr {$S(frame) ne "" ? "plane" : $S(tcp) ? "tcp" : "joint"}
+        list {*}$state $limit $arc 1 $moved $F $pairs $comments $unknown $hole
     }
 
     # Reads a G68.2 block (words): the work plane's origin X Y Z and its
@@ -571,43 +573,36 @@ oo::class create ::fivax::verify::Checker {
         set saved [list $S(X) $S(Y) $S(Z)]
         lassign $xyz S(X) S(Y) S(Z)
         try {
-            return [my Pose]
+            return [lindex [my State] 1]
         } finally {
             lassign $saved S(X) S(Y) S(Z)
         }
     }
 
-    # Returns {P t}: the tip and axis in the workpiece frame of the modal
-    # X Y Z and rotaries in the current space, or "" while unknown.
-    method Pose {} {
-        if {$S(X) eq "" || $S(Y) eq "" || $S(Z) eq ""} {return ""}
+    # Returns {joints pose space} of the modal X Y Z and rotaries: the
+    # joint vector {X Y Z q1 q2} (in TCP mode the machine X Y Z that put
+    # the tip on the written X Y Z; always "" in a work plane, whose
+    # rotaries are the control's), the pose {P t} (tip and axis in the
+    # workpiece frame) and what X Y Z are (plane, tcp or joint); joints
+    # and pose are "" while an axis they need is unknown.
+    method State {} {
         set xyz [list $S(X) $S(Y) $S(Z)]
         if {$S(frame) ne ""} {
+            if {"" in $xyz} {return {{} {} plane}}
             lassign $S(frame) R O
-            return [list [::fivax::plane::fromPlane $R $O $xyz] \
-                [lmap row $R {lindex $row 2}]]
+            return [list "" [list [::fivax::plane::fromPlane $R $O $xyz] \
+                [lmap row $R {lindex $row 2}]] plane]
         }
-        if {$S(q1) eq "" || $S(q2) eq ""} {return ""}
+        if {"" in $xyz || $S(q1) eq "" || $S(q2) eq ""} {
+            return [list "" "" [expr {$S(tcp) ? "tcp" : "joint"}]]
+        }
+        set q [list $S(q1) $S(q2)]
         if {$S(tcp)} {
-            set t [lindex [::fivax::kin::forward $S(model) [list 0.0 0.0 0.0 $S(q1) $S(q2)]] 1]
-            return [list $xyz $t]
+            set t [lindex [::fivax::kin::forward $S(model) [list 0.0 0.0 0.0 {*}$q]] 1]
+            return [list [concat [::fivax::kin::position $S(model) $xyz $q] $q] [list $xyz $t] tcp]
         }
-        ::fivax::kin::forward $S(model) [list {*}$xyz $S(q1) $S(q2)]
-    }
-
-    # Returns the modal joint vector {X Y Z q1 q2}, or "" while one is unknown.
-    # (in TCP mode the machine X Y Z that put the tip on the written X Y
-    # Z; in a work plane "": the rotaries are the control's).
-    method Joints {} {
-        if {$S(X) eq "" || $S(Y) eq "" || $S(Z) eq "" || $S(q1) eq "" || $S(q2) eq ""
-                || $S(frame) ne ""} {
-            return ""
-        }
-        if {$S(tcp)} {
-            set q [list $S(q1) $S(q2)]
-            return [concat [::fivax::kin::position $S(model) [list $S(X) $S(Y) $S(Z)] $q] $q]
-        }
-        list $S(X) $S(Y) $S(Z) $S(q1) $S(q2)
+        set joints [concat $xyz $q]
+        list $joints [::fivax::kin::forward $S(model) $joints] joint
     }
 
     # Returns {P t}: tool tip and axis (workpiece frame) at joints.
@@ -637,12 +632,10 @@ oo::class create ::fivax::verify::Checker {
     # Returns joints j1 with each rotary that rolls over moved to the
     # value nearest its value in j0 (the way the controller turns it).
     method Rolled {j0 j1} {
-        foreach i {3 4} roll $S(rollover) {
-            if {$roll} {
-                set a [lindex $j0 $i]
-                set d [expr {[lindex $j1 $i] - $a}]
-                lset j1 $i [expr {$a + $d - 2.0 * $S(pi) * round($d / (2.0 * $S(pi)))}]
-            }
+        foreach i $S(rolling) {
+            set a [lindex $j0 $i]
+            set d [expr {[lindex $j1 $i] - $a}]
+            lset j1 $i [expr {$a + $d - 2.0 * $S(pi) * round($d / (2.0 * $S(pi)))}]
         }
         return $j1
     }
@@ -650,7 +643,8 @@ oo::class create ::fivax::verify::Checker {
     # Raises {FIVAX MACHINE LIMIT} with the move's FILE:LINE (machine
     # checkLimits) when the block read (joints and limit as read returns
     # them) leaves the machine's X Y Z travel (its machine X Y Z, when
-    # known) or a rotary's limits.
+    # known) or a rotary's limits (block calls it when a value is outside
+    # the machine's bounds).
     method CheckLimits {joints limit line move} {
         set values {}
         if {$joints ne ""} {
@@ -660,22 +654,21 @@ oo::class create ::fivax::verify::Checker {
         foreach axis $limit {
             dict set values $axis $S([lindex $S(axis:$axis) 0])
         }
-        if {![llength [::fivax::machine::outside $S(machine) $values]]} return
         set where [dict get $move src]
         if {$where eq ""} {set where "NC block '$line'"}
         ::fivax::machine::checkLimits $S(machine) $values $where
     }
 
-    # Raises {FIVAX VERIFY DRILL} with the move's FILE:LINE when a canned
-    # cycle's hole (read as joints and pose {P t} in space) is not drilled
-    # along the tool axis t: the control feeds along the Z of the space,
-    # which in joint space moves the tip by forward kinematics of a unit Z
-    # joint move, in TCP space along the workpiece Z (a work plane's Z is
-    # the tool axis). Allowed: drillTol degrees.
-    method CheckDrill {joints pose space line move} {
+    # Returns the angle (deg) between the tool axis t and the direction
+    # a canned cycle's hole (read as joints and pose {P t} in space) is
+    # drilled along when it exceeds drillTol, else "": the control feeds
+    # along the Z of the space, which in joint space moves the tip by
+    # forward kinematics of a unit Z joint move, in TCP space along the
+    # workpiece Z (a work plane's Z is the tool axis: always "").
+    method drillOff {joints pose space} {
         lassign $pose P t
         switch -- $space {
-            plane {return}
+            plane {return ""}
             tcp {set along {0.0 0.0 1.0}}
             joint {
                 lassign $joints x y z q1 q2
@@ -684,7 +677,15 @@ oo::class create ::fivax::verify::Checker {
             }
         }
         set off [::fivax::num::deg [::fivax::vec::angle $along $t]]
-        if {$off <= $::fivax::verify::drillTol} return
+        expr {$off <= $::fivax::verify::drillTol ? "" : $off}
+    }
+
+    # Raises {FIVAX VERIFY DRILL} with the move's FILE:LINE when a canned
+    # cycle's hole (read as joints and pose {P t} in space) is not drilled
+    # along the tool axis (drillOff).
+    method CheckDrill {joints pose space line move} {
+        set off [my drillOff $joints $pose $space]
+        if {$off eq ""} return
         set where [dict get $move src]
         if {$where eq ""} {set where "NC block '$line'"}
         ::fivax::Fail VERIFY DRILL [format "%s: the canned cycle drills along Z with the\
@@ -703,7 +704,14 @@ oo::class create ::fivax::verify::Checker {
     # summary keeps).
     method block {line move} {
         lassign [my Read $line 0] joints pose space limit arc - - - - - - hole
-        my CheckLimits $joints $limit $line $move
+        # the limits: Read lists the rotaries outside their bounds, the
+        # machine X Y Z are held against the travel's here
+        lassign $joints x y z
+        lassign $S(travel) x0 x1 y0 y1 z0 z1
+        if {$limit ne "" || ($joints ne "" && !($x >= $x0 && $x <= $x1 && $y >= $y0 && $y <= $y1
+                && $z >= $z0 && $z <= $z1))} {
+            my CheckLimits $joints $limit $line $move
+        }
         if {$hole && $pose ne ""} {my CheckDrill $joints $pose $space $line $move}
         set P [dict get $move P]
         if {$P eq "" || $pose eq ""} {
@@ -728,9 +736,10 @@ oo::class create ::fivax::verify::Checker {
         if {[dict get $move kind] eq "feed" && $S(prev) ne ""} {
             lassign $S(prev) j0 P0 t0 ep0 ea0
             incr S(segments)
-            set j1 [my Rolled $j0 $joints]
+            set j1 $joints
+            if {$S(rolling) ne ""} {set j1 [my Rolled $j0 $joints]}
             lassign [::fivax::kin::interpolationBound $S(model) $j0 $j1 $P0 $P $t0 $t \
-                [expr {max($ep0, $dp)}] [expr {max($ea0, $ea)}]] bp ba
+                [expr {$ep0 > $dp ? $ep0 : $dp}] [expr {$ea0 > $ea ? $ea0 : $ea}]] bp ba
             if {$bp > $S(maxMidPos) || $ba * 180.0 / $S(pi) > $S(maxMidAng)} {
                 lassign [my interior $j0 $joints $P0 $P $t0 $t] dp2 da2
                 if {$dp2 > $S(maxMidPos)} {set S(maxMidPos) $dp2; set S(worstMid) [dict get $move src]}

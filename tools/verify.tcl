@@ -5,9 +5,11 @@
 #	and axis deviation at block ends (against the CL path with -cl) and
 #	inside joint-space moves (the controller's linear joint interpolation
 #	against the straight line between the block ends), rotary travel,
-#	retracts, rotary values outside the limits and feed anomalies, and
-#	names the worst NC line. Exits 1 when a figure exceeds the
-#	tolerances, a value is outside the limits or a feed is wrong.
+#	retracts, rotary values outside the limits, feed anomalies and
+#	canned-cycle holes not drilled along the tool axis, and names the
+#	worst NC line. Exits 1 when a figure exceeds the tolerances, a value
+#	is outside the limits, a feed is wrong or a hole is drilled off the
+#	tool axis.
 #
 #	tclsh tools/verify.tcl -machine M.tcl ?options? part.nc   (-help)
 
@@ -62,7 +64,7 @@ proc ::verifytool::ParseArgs {argv} {
 proc ::verifytool::NewOp {name} {
     dict create name $name blocks 0 feeds 0 moves 0 endPos 0.0 endPosAt {} endAng 0.0 \
         endAngAt {} midPos 0.0 midPosAt {} midAng 0.0 midAngAt {} travel {0.0 0.0} \
-        retracts 0 limits 0 limitAt {} feedIssues 0 feedAt {}
+        retracts 0 limits 0 limitAt {} feedIssues 0 feedAt {} drills 0 drillAt {}
 }
 
 # ::verifytool::Max --
@@ -148,6 +150,13 @@ proc ::verifytool::Line {line where n} {
     if {[dict get $blk hole]} {
         # a canned cycle's hole, checked at its bottom; its motions are
         # the controller's, and the tool ends on the return level
+        set off [$S(checker) drillOff $joints $pose [dict get $blk space]]
+        if {$off ne ""} {
+            dict incr S(op) drills
+            if {[dict get $S(op) drillAt] eq ""} {
+                dict set S(op) drillAt [format "%s: %.3f deg off" $where $off]
+            }
+        }
         set S(prev) {}
         set figures [Cutting $blk $joints $P $t $where Bottom]
         set S(prevMotion) 0
@@ -367,6 +376,9 @@ proc ::verifytool::Problems {} {
         }
         if {$limits} {lappend problems "$name: $limits rotary values outside the limits, first at $limitAt"}
         if {$feedIssues} {lappend problems "$name: $feedIssues feed anomalies, first at $feedAt"}
+        if {$drills} {
+            lappend problems "$name: $drills canned-cycle holes not drilled along the tool axis, first at $drillAt"
+        }
     }
     return $problems
 }
