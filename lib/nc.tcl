@@ -198,13 +198,13 @@ oo::class create ::fivax::nc::Writer {
             # (x is v itself, or what scan read).
             if {$kind eq "s"} {
                 set t $v
-                if {[string index $t 0] eq "-" && [string is double -strict $t] && $t == 0} {
+                if {[string match -* $t] && [string is double -strict $t] && $t == 0} {
                     set t [string range $t 1 end]
                 }
             } elseif {[string is double -strict [set x $v]] && ![string is entier -strict $v]
                     || [scan $v %lf%c x junk] == 1} {
                 if {$x < $lo || $x > $hi} {set x [my Bound $name $x]}
-                if {!(abs($x) < Inf)} {
+                if {!($x > -Inf && $x < Inf)} {
                     ::fivax::Fail NC VALUE "address $name: value is not finite: $v"
                 } elseif {$kind eq "d"} {
                     set t [::format $spec [expr {round($x)}]]
@@ -355,8 +355,7 @@ oo::class create ::fivax::nc::Writer {
     # numbering stops with one warning: never a repeated N.
     method Numbered {text} {
         if {!$S(seqOn)} {return $text$S(eol)}
-        set n $S(seqNext)
-        if {$n > $S(seqMax)} {
+        if {$S(seqNext) > $S(seqMax)} {
             set S(seqOn) 0
             set warn [dict get $S(cfg) -warn]
             if {[llength $warn]} {
@@ -365,14 +364,14 @@ oo::class create ::fivax::nc::Writer {
             }
             return $text$S(eol)
         }
-        set S(seqNext) [expr {$n + $S(seqIncr)}]
         lassign $Addr(N) mode kind spec leader trailer
         if {$kind eq "d"} {
-            set word $leader[::format $spec $n]$trailer
+            set text $leader[::format $spec $S(seqNext)]$trailer$S(sep)$text$S(eol)
         } else {
-            set word $leader[::fivax::nc::FormatValue $kind $spec $n]$trailer
+            set text $leader[::fivax::nc::FormatValue $kind $spec $S(seqNext)]$trailer$S(sep)$text$S(eol)
         }
-        return $word$S(sep)$text$S(eol)
+        incr S(seqNext) $S(seqIncr)
+        return $text
     }
 
     # Clears the once requests of the addresses used by a block.
@@ -486,7 +485,7 @@ proc ::fivax::nc::ParseFormat {F} {
 # ::fivax::nc::FormatValue -- Returns value in the parsed format {kind spec} (slow path of block).
 proc ::fivax::nc::FormatValue {kind spec v} {
     if {$kind eq "s"} {
-        if {[string index $v 0] eq "-" && [string is double -strict $v] && $v == 0} {
+        if {[string match -* $v] && [string is double -strict $v] && $v == 0} {
             return [string range $v 1 end]
         }
         return $v
@@ -494,7 +493,7 @@ proc ::fivax::nc::FormatValue {kind spec v} {
     if {([string is double -strict $v] && ![string is entier -strict $v])
         || [scan $v %lf%c x junk] == 1} {
         if {![info exists x]} {set x $v}
-        if {!(abs($x) < Inf)} {::fivax::Fail NC VALUE "value is not finite: $v"}
+        if {!($x > -Inf && $x < Inf)} {::fivax::Fail NC VALUE "value is not finite: $v"}
         if {$kind eq "d"} {return [::format $spec [expr {round($x)}]]}
         return [FormatNumber $kind $spec $x]
     }
@@ -505,7 +504,7 @@ proc ::fivax::nc::FormatValue {kind spec v} {
 proc ::fivax::nc::FormatNumber {kind spec x} {
     if {$kind eq "a"} {return [Amp $spec $x]}
     set t [::format $spec $x]
-    if {[string index $t 0] eq "-" && ![string match {*[1-9]*} $t]} {
+    if {[string match -* $t] && ![string match {*[1-9]*} $t]} {
         set t [expr {$kind eq "F" ? "+" : ""}][string range $t 1 end]
     }
     return $t
