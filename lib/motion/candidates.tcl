@@ -47,9 +47,7 @@ proc ::fivax::motion::Candidates {ctx t cone refs src} {
             "$src: tool axis ([AxisText $t]) unreachable on [dict get $ctx name]"
     }
     set cone [expr {$status eq "singular" || $cone}]
-    set out {}
-    if {$cone && [llength $refs]} {set out [Held $ctx $t $refs]}
-    if {![llength $out]} {
+    if {!$cone || ![llength $refs] || ![llength [set out [Held $ctx $t $refs]]]} {
         set out [Exact $ctx $sols $refs [expr {$cone || [llength $sols] < 2}]]
     }
     if {![llength $out]} {
@@ -65,20 +63,14 @@ proc ::fivax::motion::Candidates {ctx t cone refs src} {
 #	all when merged is 1, else the solution's index.
 proc ::fivax::motion::Exact {ctx sols refs merged} {
     lassign [dict get $ctx limits] lim1 lim2
-    set as {}
-    set bs {}
-    foreach sol $sols {
-        lassign $sol a b
-        lappend as $a
-        lappend bs $b
-    }
     set out {}
-    set lab [expr {$merged ? -1 : 0}]
-    foreach xs [Aliases $lim1 1 $as $refs] ys [Aliases $lim2 2 $bs $refs] {
+    # (at most two solutions: branches 0 and 1)
+    foreach xs [Aliases $lim1 1 [lmap sol $sols {lindex $sol 0}] $refs] \
+            ys [Aliases $lim2 2 [lmap sol $sols {lindex $sol 1}] $refs] \
+            lab [expr {$merged ? {-1 -1} : {0 1}}] {
         foreach x $xs {
             foreach y $ys {lappend out $x $y $lab}
         }
-        if {!$merged} {incr lab}
     }
     return $out
 }
@@ -141,23 +133,23 @@ proc ::fivax::motion::BestTilt {model t q2} {
 proc ::fivax::motion::Aliases {lim i qs refs} {
     lassign $lim min max continuous unlimited
     # (6.283185307179586 is 2 pi)
-    set out {}
-    foreach q $qs {
-        if {!$continuous} {
+    if {!$continuous} {
+        return [lmap q $qs {
             if {$q >= $min && $q <= $max && $q - 6.283185307179586 < $min
                     && $q + 6.283185307179586 > $max} {
-                lappend out [list $q]
-                continue
+                list $q
+            } else {
+                set vals {}
+                set k [expr {ceil(($min - $q) / 6.283185307179586 - 1e-9)}]
+                for {set v [expr {$q + 6.283185307179586 * $k}]} {$v <= $max + 1e-9} \
+                        {set v [expr {$v + 6.283185307179586}]} {
+                    lappend vals [expr {$v < $min ? $min : $v > $max ? $max : $v}]
+                }
+                set vals
             }
-            set vals {}
-            set k [expr {ceil(($min - $q) / 6.283185307179586 - 1e-9)}]
-            for {set v [expr {$q + 6.283185307179586 * $k}]} {$v <= $max + 1e-9} \
-                    {set v [expr {$v + 6.283185307179586}]} {
-                lappend vals [expr {$v < $min ? $min : $v > $max ? $max : $v}]
-            }
-            lappend out $vals
-            continue
-        }
+        }]
+    }
+    lmap q $qs {
         if {![llength $refs]} {
             set try [list $q [expr {$q > 0 ? $q - 6.283185307179586 : $q + 6.283185307179586}]]
         } else {
@@ -177,9 +169,8 @@ proc ::fivax::motion::Aliases {lim i qs refs} {
                 lappend vals [expr {$v < $min ? $min : $v > $max ? $max : $v}]
             }
         }
-        lappend out $vals
+        set vals
     }
-    return $out
 }
 
 # ::fivax::motion::Near -- Returns the alias of angle q (mod 360 deg) nearest r.
@@ -245,7 +236,8 @@ proc ::fivax::motion::Closest {cands g1 g2 la lb} {
     set any {}
     set ad Inf
     foreach {x y lab} $cands {
-        set d [expr {abs($x - $g1) + abs($y - $g2)}]
+        # (as abs(), see Cost)
+        set d [expr {($x > $g1 ? $x - $g1 : $g1 - $x) + ($y > $g2 ? $y - $g2 : $g2 - $y)}]
         if {[Joins $lab $la] && [Joins $lab $lb]} {
             if {$d < $bd} {set bd $d; set best [list $x $y $lab]}
         } elseif {$d < $ad} {

@@ -36,10 +36,9 @@ oo::define ::fivax::motion::Planner {
         # (as abs(), see Cost)
         set d1 [expr {$b1 > $a1 ? $b1 - $a1 : $a1 - $b1}]
         set d2 [expr {$b2 > $a2 ? $b2 - $a2 : $a2 - $b2}]
-        set turn [expr {$d1 + $d2}]
-        if {$turn > 1e-9 && $d < 1e-9} {
+        if {$d < 1e-9 && $d1 + $d2 > 1e-9} {
             incr S(dwells)
-            set S(dwellTurn) [expr {$S(dwellTurn) + $turn}]
+            set S(dwellTurn) [expr {$S(dwellTurn) + ($d1 + $d2)}]
         }
         if {$S(feed) eq "direct" || ($d1 <= 1e-9 && $d2 <= 1e-9)} {
             return [list direct $f $f $d]

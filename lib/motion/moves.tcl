@@ -15,10 +15,9 @@
 proc ::fivax::motion::Record {ctx P t q1 q2 lab cone} {
     set step [dict get $ctx step]
     set q [list [Quantize $step $q1] [Quantize $step $q2]]
-    set model [dict get $ctx model]
-    set joints [concat [::fivax::kin::position $model $P $q] $q]
+    set joints [concat [::fivax::kin::position [dict get $ctx model] $P $q] $q]
     if {!$cone} {return [list $joints $P $t $t $lab]}
-    list $joints $P $t [lindex [::fivax::kin::forward $model $joints] 1] $lab
+    list $joints $P $t [lindex [::fivax::kin::forward [dict get $ctx model] $joints] 1] $lab
 }
 
 oo::define ::fivax::motion::Planner {
@@ -28,8 +27,7 @@ oo::define ::fivax::motion::Planner {
     # retract, reposition and re-engage.
     method Emit {kind P t feed src cone q1 q2 lab} {
         namespace upvar ::fivax::motion retractCost retractCost
-        set ctx $S(ctx)
-        set b [::fivax::motion::Record $ctx $P $t $q1 $q2 $lab $cone]
+        set b [::fivax::motion::Record $S(ctx) $P $t $q1 $q2 $lab $cone]
         if {$cone} {incr S(holds)}
         if {$S(last) eq ""} {
             set moves [my First $kind $b $feed $src]
@@ -39,11 +37,12 @@ oo::define ::fivax::motion::Planner {
             lassign $S(last) ja - ta - al
             lassign $ja - - - a1 a2
             if {[::fivax::motion::Cost $S(ms1) $S(ms2) 1 $a1 $a2 $al $q1 $q2 $lab] < $retractCost} {
-                if {abs($q2 - $a2) > $S(swingRad)} {my CountSwing $ta $t}
+                # (as abs(), see Cost)
+                if {($q2 > $a2 ? $q2 - $a2 : $a2 - $q2) > $S(swingRad)} {my CountSwing $ta $t}
                 set moves [my FeedMoves [my Linearise $S(last) $b 0 $src] $feed $src]
             } else {
                 set moves [my Retract $S(last) $b [my FeedClamp $feed] $src \
-                    [::fivax::motion::LimitReason $ctx $a1 $a2 $t]]
+                    [::fivax::motion::LimitReason $S(ctx) $a1 $a2 $t]]
             }
         }
         my Travel $moves
@@ -56,27 +55,27 @@ oo::define ::fivax::motion::Planner {
     }
 
     # Returns a move record (see flush) of the given kind to joints
-    # {X Y Z q1 q2}, writing the axes in write (X Y Z, and R for both
+    # {X Y Z q1 q2}, writing the axes in write (X Y Z, and last R for both
     # rotaries); feed is {mode feed rate tip} or {} for rapids.
     # X Y Z are those of the output frame (see Out); in a work plane no
     # rotary is written, and as the written X Y Z are no machine values
     # there (the checker reads only those), the machine position is
     # checked against the travel here: {FIVAX MACHINE LIMIT} naming src.
     method Move {kind joints write P t feed src {tag ""} {note ""}} {
-        set n1 $S(n1)
-        set n2 $S(n2)
         lassign $joints X Y Z q1 q2
         if {$S(plane) ne ""} {
             ::fivax::machine::checkLimits $S(machine) [list X $X Y $Y Z $Z] $src
         }
         lassign [my Out $joints] X Y Z
-        set i [lsearch -exact $write R]
-        if {$i >= 0} {
-            set write [lreplace $write $i $i {*}[expr {$S(plane) eq "" ? [list $n1 $n2] : {}}]]
+        if {[lindex $write end] eq "R"} {
+            set write [lrange $write 0 end-1]
+            if {$S(plane) eq ""} {lappend write $S(n1) $S(n2)}
         }
         if {![llength $feed]} {set feed {direct 0 0 0}}
         lassign $feed mode f rate tip
-        dict create kind $kind axes [list X $X Y $Y Z $Z $n1 $q1 $n2 $q2] write $write \
+        # (a list of distinct keys and values is that dict, and cheaper to
+        # build than with dict create)
+        list kind $kind axes [list X $X Y $Y Z $Z $S(n1) $q1 $S(n2) $q2] write $write \
             feed $f mode $mode rate $rate tip $tip P $P t $t src $src tag $tag note $note
     }
 
@@ -175,7 +174,9 @@ oo::define ::fivax::motion::Planner {
         set from [expr {$S(last) ne ""}]
         if {$from} {lassign [lindex $S(last) 0] - - - p1 p2}
         foreach move $moves {
-            lassign [dict get $move axes] - - - - - - - q1 - q2
+            set axes [dict get $move axes]
+            set q1 [lindex $axes 7]
+            set q2 [lindex $axes 9]
             if {$from} {
                 # (as abs(), see Cost)
                 set S(travel) [expr {$S(travel) + ($q1 > $p1 ? $q1 - $p1 : $p1 - $q1)

@@ -329,16 +329,15 @@ oo::class create ::fivax::motion::Planner {
         set ctx $S(ctx)
         if {[llength $S(buf)]} {
             set prev [lindex $S(buf) end 5]
-        } elseif {$S(last) ne ""} {
-            set prev [list {*}[my LastRefs] 0.0 -1]
+            set fresh 0
         } else {
-            set prev {}
+            set prev [expr {$S(last) ne "" ? [list {*}[my LastRefs] 0.0 -1] : {}}]
+            set fresh [my Fresh $kind]
         }
         set refs {}
         foreach {a b lab - -} $prev {lappend refs $a $b $lab}
         set cone [::fivax::motion::InCone $ctx $t]
         set cands [::fivax::motion::Candidates $ctx $t $cone $refs $src]
-        set fresh [expr {![llength $S(buf)] && [my Fresh $kind]}]
         set S(pathStart) 0
         if {![llength $prev]} {
             namespace upvar ::fivax::motion zeroCost zeroCost
@@ -367,7 +366,6 @@ oo::class create ::fivax::motion::Planner {
     # equal mod 360 deg on unlimited continuous axes have the same future;
     # only the cheaper is kept.
     method Relax {prev cands isFeed t src} {
-        namespace upvar ::fivax::motion retractCost retractCost
         set ms1 $S(ms1)
         set ms2 $S(ms2)
         set w1 $S(w1)
@@ -381,7 +379,7 @@ oo::class create ::fivax::motion::Planner {
             set i 0
             foreach {a1 a2 al ac -} $prev {
                 set c [::fivax::motion::Cost $ms1 $ms2 $isFeed $a1 $a2 $al $b1 $b2 $bl $w1 $w2]
-                if {!($err && $c >= $retractCost) && $ac + $c < $best} {
+                if {!($err && $c >= $::fivax::motion::retractCost) && $ac + $c < $best} {
                     set best [expr {$ac + $c}]
                     set arg $i
                 }
