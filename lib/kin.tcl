@@ -140,8 +140,9 @@ proc ::fivax::kin::model {machine toolLength {tableOffset ""}} {
     set rh [expr {sqrt(($y1 * $pz1 - $z1 * $py1) ** 2 + ($z1 * $px1 - $x1 * $pz1) ** 2
         + ($x1 * $py1 - $y1 * $px1) ** 2)}]
     set scale [expr {abs($px1) + abs($py1) + abs($pz1) + abs($px2) + abs($py2) + abs($pz2)}]
-    dict set m bound [list $kc $x1 $y1 $z1 $px1 $py1 $pz1 $x2 $y2 $z2 $px2 $py2 $pz2 $rh \
-        [expr {sqrt($x1 * $x1 + $y1 * $y1)}] $scale]
+    # (axis 1's direction and point last: only a table-table bound reads them)
+    dict set m bound [list $kc $x2 $y2 $z2 $px2 $py2 $pz2 $rh \
+        [expr {sqrt($x1 * $x1 + $y1 * $y1)}] $scale $x1 $y1 $z1 $px1 $py1 $pz1]
     return $m
 }
 
@@ -255,7 +256,8 @@ proc ::fivax::kin::orientations {model t} {
         set d [expr {$dM - $w * $r2 / (1.0 - $h)}]
     }
     set rs [expr {$r * $sqnn}]
-    set ad [expr {abs($d)}]
+    # (abs() is a command call in expr: the ternary gives the same result)
+    set ad [expr {$d > 0.0 ? $d : 0.0 - $d}]
     set D [expr {$rs - $ad}]
     if {$D < -$edgeTol} {return {unreachable {}}}
     set b [expr {($h - $w * $k1) / $nn}]
@@ -277,12 +279,13 @@ proc ::fivax::kin::orientations {model t} {
     set ut [expr {$x1 * ($tx - $h * $x2) + $y1 * ($ty - $h * $y2) + $z1 * ($tz - $h * $z2)}]
     set nt [expr {$nx * $tx + $ny * $ty + $nz * $tz}]
     set sols {}
+    set mpi [expr {-$pi}]
     foreach sg [expr {$g > 0.0 ? {1.0 -1.0} : {1.0}}] {
         set gg [expr {$sg * $g}]
         set q1 [expr {$s1 * atan2($b * $m1u2 + $gg * $m1n, $b * $zpu2 + $gg * $zpn) + $o1}]
         set q2 [expr {$s2 * atan2($a * $ue + $gg * $ne, $a * $ut + $gg * $nt) + $o2}]
-        if {$q1 <= -$pi || $q1 > $pi} {set q1 [Wrap $q1]}
-        if {$q2 <= -$pi || $q2 > $pi} {set q2 [Wrap $q2]}
+        if {$q1 <= $mpi || $q1 > $pi} {set q1 [Wrap $q1]}
+        if {$q2 <= $mpi || $q2 > $pi} {set q2 [Wrap $q2]}
         lappend sols [list $q1 $q2]
     }
     list regular $sols
@@ -399,7 +402,8 @@ proc ::fivax::kin::interpolationError {model j0 j1 P0 P1 t0 t1 {tol Inf} {atol I
         if {$d > $dp} {set dp $d}
         if {$arc && $tx * $ex + $ty * $ey + $tz * $ez >= 0.0
                 && $tx * $fx + $ty * $fy + $tz * $fz >= 0.0} {
-            set g [expr {abs($tx * $nx + $ty * $ny + $tz * $nz)}]
+            set g [expr {$tx * $nx + $ty * $ny + $tz * $nz}]
+            set g [expr {$g > 0.0 ? $g : 0.0 - $g}]
             set g [expr {$g < 1.0 ? asin($g) : 1.5707963267948966}]
         } else {
             set g [::fivax::vec::angle $t $t0]
@@ -466,17 +470,14 @@ proc ::fivax::kin::interpolationError {model j0 j1 P0 P1 t0 t1 {tol Inf} {atol I
 proc ::fivax::kin::interpolationBound {model j0 j1 P0 P1 t0 t1 ep ea} {
     lassign $j0 X0 Y0 Z0 a0 b0
     lassign $j1 X1 Y1 Z1 a1 b1
-    lassign [dict get $model bound] kc ux1 uy1 uz1 px1 py1 pz1 ux2 uy2 uz2 px2 py2 pz2 \
-        rh k1 scale
+    set bound [dict get $model bound]
+    lassign $bound kc ux2 uy2 uz2 px2 py2 pz2 rh k1 scale
     lassign $P0 x0 y0 z0
     lassign $P1 x1 y1 z1
     # (abs() is a command call in expr: the ternaries give the same results
     # at a fraction of the cost; a zero may differ only in its sign)
     set w1 [expr {$a1 > $a0 ? $a1 - $a0 : $a0 - $a1}]
     set w2 [expr {$b1 > $b0 ? $b1 - $b0 : $b0 - $b1}]
-    set vx [expr {$X1 - $X0}]
-    set vy [expr {$Y1 - $Y0}]
-    set vz [expr {$Z1 - $Z0}]
     # the points axis 2 turns, relative to p2, at the ends
     if {$kc == 0} {
         set ex [expr {$x0 - $X0 - $px2}]; set ey [expr {$y0 - $Y0 - $py2}]; set ez [expr {$z0 - $Z0 - $pz2}]
@@ -493,12 +494,16 @@ proc ::fivax::kin::interpolationBound {model j0 j1 P0 P1 t0 t1 ep ea} {
         set r2 [expr {0.5 * ($r2 + $w1 * $r1)}]
         set lin 0.0
     } else {
+        set vx [expr {$X1 - $X0}]
+        set vy [expr {$Y1 - $Y0}]
+        set vz [expr {$Z1 - $Z0}]
         set v [expr {sqrt($vx * $vx + $vy * $vy + $vz * $vz)}]
         if {$kc == 1} {
             set r1 $rh
             set lin [expr {2.0 * $w2 * sqrt(($uy2 * $vz - $uz2 * $vy) ** 2
                 + ($uz2 * $vx - $ux2 * $vz) ** 2 + ($ux2 * $vy - $uy2 * $vx) ** 2)}]
         } else {
+            lassign [lrange $bound end-5 end] ux1 uy1 uz1 px1 py1 pz1
             set ex [expr {$X0 - $px1}]; set ey [expr {$Y0 - $py1}]; set ez [expr {$Z0 - $pz1}]
             set fx [expr {$X1 - $px1}]; set fy [expr {$Y1 - $py1}]; set fz [expr {$Z1 - $pz1}]
             set r1 [expr {sqrt(($uy1 * $ez - $uz1 * $ey) ** 2 + ($uz1 * $ex - $ux1 * $ez) ** 2
@@ -517,7 +522,9 @@ proc ::fivax::kin::interpolationBound {model j0 j1 P0 P1 t0 t1 ep ea} {
         + ($x0 > 0.0 ? $x0 : 0.0 - $x0) + ($y0 > 0.0 ? $y0 : 0.0 - $y0)
         + ($z0 > 0.0 ? $z0 : 0.0 - $z0) + ($x1 > 0.0 ? $x1 : 0.0 - $x1)
         + ($y1 > 0.0 ? $y1 : 0.0 - $y1) + ($z1 > 0.0 ? $z1 : 0.0 - $z1)}]
-    set bp [expr {($w1 * ($w1 + 2.0 * $w2) * $r1 + $w2 * $w2 * $r2 + $lin) / 8.0 + $ep
+    # w1^2 + 2 w1 w2, the factor of r1 and of k1
+    set ww [expr {$w1 * ($w1 + 2.0 * $w2)}]
+    set bp [expr {($ww * $r1 + $w2 * $w2 * $r2 + $lin) / 8.0 + $ep
         + 1e-9 * (1.0 + $size)}]
     # the axis: k2 from |u2 x t| at the ends
     lassign $t0 ax ay az
@@ -526,7 +533,7 @@ proc ::fivax::kin::interpolationBound {model j0 j1 P0 P1 t0 t1 ep ea} {
         + ($ux2 * $ay - $uy2 * $ax) ** 2) + sqrt(($uy2 * $bz - $uz2 * $by) ** 2
         + ($uz2 * $bx - $ux2 * $bz) ** 2 + ($ux2 * $by - $uy2 * $bx) ** 2)
         + 2.0 * $ea + $w1 * $k1)}]
-    set e [expr {($w1 * ($w1 + 2.0 * $w2) * $k1 + $w2 * $w2 * $k2) / 8.0 + $ea}]
+    set e [expr {($ww * $k1 + $w2 * $w2 * $k2) / 8.0 + $ea}]
     if {$e >= 1.0} {return [list $bp Inf]}
     set nl [expr {sqrt(($ay * $bz - $az * $by) ** 2 + ($az * $bx - $ax * $bz) ** 2
         + ($ax * $by - $ay * $bx) ** 2)}]

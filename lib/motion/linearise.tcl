@@ -32,10 +32,8 @@ oo::define ::fivax::motion::Planner {
             ::fivax::motion::CheckFlip $ta $tb $src
             set S(pieces) 0
         }
-        set ctx $S(ctx)
-        lassign $ja - - - a1 a2
-        lassign $jb - - - b1 b2
-        set ok [expr {[::fivax::motion::Cost $S(ms1) $S(ms2) 1 $a1 $a2 $la $b1 $b2 $lb] < $retractCost}]
+        set ok [expr {[::fivax::motion::Cost $S(ms1) $S(ms2) 1 [lindex $ja 3] [lindex $ja 4] $la \
+            [lindex $jb 3] [lindex $jb 4] $lb] < $retractCost}]
         set n 2
         if {$ok} {
             # First the bound (kin interpolationBound): it proves most moves
@@ -63,7 +61,7 @@ oo::define ::fivax::motion::Planner {
         if {$depth < $maxDepth && $S(pieces) < $maxPieces} {
             incr S(pieces) $n
             try {
-                set pts [::fivax::motion::Split $ctx $a $b $n $src]
+                set pts [::fivax::motion::Split $S(ctx) $a $b $n $src]
                 lappend pts $b
                 set out {}
                 set prev $a
