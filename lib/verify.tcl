@@ -142,7 +142,7 @@ proc ::fivax::verify::LineRe {re} {
 oo::class create ::fivax::verify::Checker {
     # S: machine, tableOffset, the dialect's comment skip word syntax
     # (its table entry), lineRe, plainText, pi, the tables CycleG KnownG
-    # KnownLetters, rolling, travel, axis:NAME, model, the modal state X Y
+    # KnownLetters, rolling, axis:NAME, model, the modal state X Y
     # Z q1 q2 motion (0/1) mode (direct/inverse) F, prev (the last checked
     # block) and the statistics (see summary).
     variable S
@@ -169,12 +169,9 @@ oo::class create ::fivax::verify::Checker {
         foreach axis $chain i {3 4} {
             if {[dict get $axis rollover]} {lappend S(rolling) $i}
         }
-        # the machine's bounds (its travel and limits widened by machine
-        # outside's slack): travel {Xlo Xhi Ylo Yhi Zlo Zhi}, and axis:NAME
-        # -> {key lo hi}: the rotary's modal value (q1, q2) and its bounds
-        # (radians)
+        # axis:NAME -> {key lo hi}: the rotary's modal value (q1, q2) and
+        # its bounds (radians: the limits widened by machine outside's slack)
         set bounds [dict get $machine bounds]
-        set S(travel) [concat {*}[lmap axis {X Y Z} {dict get $bounds $axis}]]
         foreach name $names key {q1 q2} {
             set S(axis:$name) [list $key {*}[dict get $bounds $name]]
         }
@@ -643,8 +640,7 @@ oo::class create ::fivax::verify::Checker {
     # Raises {FIVAX MACHINE LIMIT} with the move's FILE:LINE (machine
     # checkLimits) when the block read (joints and limit as read returns
     # them) leaves the machine's X Y Z travel (its machine X Y Z, when
-    # known) or a rotary's limits (block calls it when a value is outside
-    # the machine's bounds).
+    # known) or a rotary's limits.
     method CheckLimits {joints limit line move} {
         set values {}
         if {$joints ne ""} {
@@ -704,14 +700,7 @@ oo::class create ::fivax::verify::Checker {
     # summary keeps).
     method block {line move} {
         lassign [my Read $line 0] joints pose space limit arc - - - - - - hole
-        # the limits: Read lists the rotaries outside their bounds, the
-        # machine X Y Z are held against the travel's here
-        lassign $joints x y z
-        lassign $S(travel) x0 x1 y0 y1 z0 z1
-        if {$limit ne "" || ($joints ne "" && !($x >= $x0 && $x <= $x1 && $y >= $y0 && $y <= $y1
-                && $z >= $z0 && $z <= $z1))} {
-            my CheckLimits $joints $limit $line $move
-        }
+        if {$limit ne "" || $joints ne ""} {my CheckLimits $joints $limit $line $move}
         if {$hole && $pose ne ""} {my CheckDrill $joints $pose $space $line $move}
         set P [dict get $move P]
         if {$P eq "" || $pose eq ""} {
