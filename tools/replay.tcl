@@ -412,7 +412,7 @@ proc ::replay::Terminal {chan} {
 # ::replay::CheckProcess --
 #	Returns 1 when the block check runs in a second process: -check-process
 #	on, or auto for a CL file of checkProcessBytes or more on a machine
-#	with two processors or more (getconf tells; 1 when it cannot).
+#	with two processors or more (getconf tells; 0 when it cannot).
 proc ::replay::CheckProcess {when clsf} {
     variable checkProcessBytes
     switch -- $when {
@@ -463,10 +463,7 @@ proc ::replay::Post {settings clsf chan out process} {
         set code [dict get $opts -errorcode]
         if {$process} {
             set failure [[$rt interp] eval ::fivax::checkproc::failure]
-            if {[llength $failure]} {
-                lassign $failure code msg clline
-                if {$clline ne ""} {[$rt interp] eval [list set ::mom_cl_line $clline]}
-            }
+            if {[llength $failure]} {lassign $failure code msg}
         }
         if {[lindex $code 0] ne "FIVAX" && [lindex $code 0] ne "REPLAY"} {
             set msg "internal error: $msg"

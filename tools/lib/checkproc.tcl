@@ -47,8 +47,9 @@ proc ::fivax::checkproc::install {tclsh libdir} {
 
 # ::fivax::checkproc::failure --
 #	Ends the checker process, if any, after it has checked every block
-#	sent; returns its error as {code message clline op}, or {} when it
-#	found none.
+#	sent; returns its error as {code message clline op}, with the CL
+#	record and operation of its block set back (see Proxy Raise), or {}
+#	when it found none.
 proc ::fivax::checkproc::failure {} {
     variable proxy
     if {$proxy eq "" || [info object isa object $proxy] == 0} {return {}}
@@ -120,7 +121,10 @@ oo::class create ::fivax::checkproc::Proxy {
             chan configure $S(in) -blocking 1
             set reply [my Answer]
             close $S(in)
-            if {[lindex $reply 0] eq "error"} {set S(failure) [lrange $reply 1 end]}
+            if {[lindex $reply 0] eq "error"} {
+                set S(failure) [lrange $reply 1 end]
+                my Place {*}[lrange $S(failure) 2 3]
+            }
         }
         return $S(failure)
     }
@@ -151,10 +155,15 @@ oo::class create ::fivax::checkproc::Proxy {
     #	would have raised it: with the CL record and operation of its block.
     method Raise {reply} {
         lassign $reply - code msg clline op
+        my Place $clline $op
+        return -code error -errorcode $code $msg
+    }
+
+    # Place -- Sets mom_cl_line and mom_path_name back to clline and op ("": unset).
+    method Place {clline op} {
         foreach name {::mom_cl_line ::mom_path_name} value [list $clline $op] {
             if {$value eq ""} {unset -nocomplain $name} else {set $name $value}
         }
-        return -code error -errorcode $code $msg
     }
 }
 
