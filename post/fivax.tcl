@@ -347,9 +347,7 @@ proc fivax_arc {} {
     global fivax mom_prev_mcs_goto mom_mcs_goto mom_arc_center mom_arc_axis
     global mom_arc_direction mom_arc_times mom_tool_axis mom_feed_rate
     set feed [expr {[info exists mom_feed_rate] ? $mom_feed_rate : 0.0}]
-    if {!($feed > 0) && [fivax_feed_zero $feed] eq "rapid"} {
-        error "arc at a programmed feed of 0 (rapid in NX): an arc has no rapid form, program a feed"
-    }
+    if {!($feed > 0)} {fivax_feed_zero $feed arc}
     set xyz {0 1 2}
     fivax_emit [$fivax(plan) arc [lmap i $xyz {set mom_prev_mcs_goto($i)}] \
         [lmap i $xyz {set mom_mcs_goto($i)}] [lmap i $xyz {set mom_arc_center($i)}] \
@@ -400,12 +398,13 @@ proc fivax_motion {kind {point ""}} {
 }
 
 # fivax_feed_zero --
-#	Returns the kind of a cutting move whose feed (mm/min) is not above 0:
-#	rapid when the programmed feed is 0, which in NX means rapid
-#	(nx-conventions.md, mom_programmed_feed_rate), with a warning at the
-#	first such move; an error for a negative feed or a feed per
-#	revolution with the spindle stopped (no control moves at it).
-proc fivax_feed_zero {feed} {
+#	Returns the kind of a cutting move (what: move or arc) whose feed
+#	(mm/min) is not above 0: rapid when the programmed feed is 0, which in
+#	NX means rapid (nx-conventions.md, mom_programmed_feed_rate), with a
+#	warning at the first such move; an error for an arc there (it has no
+#	rapid form), a negative feed or a feed per revolution with the
+#	spindle stopped (no control moves at it).
+proc fivax_feed_zero {feed {what move}} {
     global fivax mom_programmed_feed_rate
     set programmed [expr {[info exists mom_programmed_feed_rate] ? $mom_programmed_feed_rate : $feed}]
     if {$programmed < 0 || $feed < 0} {
@@ -414,6 +413,9 @@ proc fivax_feed_zero {feed} {
     if {$programmed != 0} {
         error "cutting move at a feed of 0 mm/min (a feed of $programmed per revolution\
             with the spindle stopped): start the spindle first"
+    }
+    if {$what eq "arc"} {
+        error "arc at a programmed feed of 0 (rapid in NX): an arc has no rapid form, program a feed"
     }
     if {!$fivax(zeroFeed)} {
         set fivax(zeroFeed) 1
