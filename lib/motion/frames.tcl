@@ -249,6 +249,7 @@ oo::define ::fivax::motion::Planner {
         lassign {0.0 0.0 direct Inf} S(tol) S(atol) S(feed) S(atolCheck)
         set S(plane) [list $R {0.0 0.0 0.0} $t]
         set S(last) ""
+        set S(lastHole) ""
         foreach item $items {
             lappend moves {*}[my {*}$item]
         }

@@ -58,12 +58,13 @@ oo::define ::fivax::motion::Planner {
         set f [my FeedClamp $rate]
         set zi [lindex [my Out [lindex $rec(initial) 0]] 2]
         if {$native && [my NextHole $q1 $q2 $zi]} {
-            # the canned cycle goes on: it moves to the hole at its initial level
-            lassign $S(lastHole) - - zi
+            # the canned cycle goes on: it moves to the hole at the last
+            # hole's initial level, the point of the hole's axis where the
+            # output Z (along t: see AlongOutZ) is that level
+            set up [expr {[lindex $S(lastHole) 2] - $zi}]
+            set zi [lindex $S(lastHole) 2]
             set new {}
-            set joints [lreplace [lindex $rec(initial) 0] 2 2 $zi]
-            set rec(initial) [lreplace $rec(initial) 0 1 $joints \
-                [lindex [::fivax::kin::forward $S(model) $joints] 0]]
+            set rec(initial) [my HolePoint $P $t [expr {max($rapid, $retract) + $up}] $q1 $q2 $lab]
         } else {
             set new [my Approach $rec(initial) $src]
         }
@@ -86,11 +87,10 @@ oo::define ::fivax::motion::Planner {
 
     # Returns 1 when a canned cycle's next hole needs no approach: the
     # last written record was a canned-cycle hole with rotaries q1 q2,
-    # and its initial level is not below zi (machine Z).
-    # (Machine Z only: in TCP mode and in a work plane each hole is
-    # approached anew.)
+    # and its initial level is not below zi (Z of the output frame: the
+    # machine's, the workpiece's in TCP mode, the work plane's).
     method NextHole {q1 q2 zi} {
-        if {$S(lastHole) eq "" || $S(tcp) || $S(plane) ne ""} {return 0}
+        if {$S(lastHole) eq ""} {return 0}
         lassign $S(lastHole) p1 p2 z
         expr {abs($p1 - $q1) < 1e-9 && abs($p2 - $q2) < 1e-9 && $zi <= $z + 1e-9}
     }
