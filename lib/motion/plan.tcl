@@ -319,13 +319,18 @@ oo::class create ::fivax::motion::Planner {
         my Emit $kind $P $t $feed $src $cone {*}$choice
     }
 
-    # Adds one CL point to the optimiser's buffer as a layer
+    # Adds CL point P, t (already in the workpiece frame) as add does:
+    # greedy, or to the optimiser's buffer as a layer
     # {kind P t feed src states cone}, states being the flat list
     # {q1 q2 branch cost back ...}: cost of the best path from the last
     # written point (normalised to a minimum of 0), back the index of its
     # predecessor in the previous layer (-1 for the first layer); cone is
-    # InCone of t.
-    method Step {kind P t feed src} {
+    # InCone of t. Returns the moves of a full window's settled part.
+    method AddWork {kind P t feed src} {
+        incr S(points)
+        if {$S(rotary) eq "greedy"} {
+            return [my Greedy $kind $P $t $feed $src]
+        }
         set ctx $S(ctx)
         if {[llength $S(buf)]} {
             set prev [lindex $S(buf) end 5]
@@ -357,9 +362,11 @@ oo::class create ::fivax::motion::Planner {
             }
         }
         lappend S(buf) [list $kind $P $t $feed $src $states $cone]
+        if {[llength $S(buf)] < $S(window)} {return {}}
+        my Commit 0
     }
 
-    # Returns the states (see Step) of the candidate triples cands reached
+    # Returns the states (see AddWork) of the candidate triples cands reached
     # from the states prev by a move of the given kind (isFeed 1: cutting).
     # With -on-limit error, moves needing a retract are excluded and a
     # layer left unreachable raises {FIVAX MOTION LIMIT} naming src. States
