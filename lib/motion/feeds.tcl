@@ -14,8 +14,10 @@ oo::define ::fivax::motion::Planner {
 
     # Returns the cutting moves through the point records pts (the last
     # one the CL point, the others inserted) from the last written point
-    # at tip feed (mm/min, clamped here); a record flagged retract is
-    # reached by a retract instead. The feed word of a move (mode and
+    # at tip feed (mm/min, clamped here), and adds their rotary travel to
+    # the statistics (as Travel: a piece's rotaries turn once, so its
+    # travel is that of its ends); a record flagged retract is reached
+    # by a retract instead. The feed word of a move (mode and
     # rate, see flush): direct (rate the tip feed f) when no rotary moves
     # or -feed direct; else inverse (rate f/d, d the tip path length in
     # the workpiece frame, at most inverse_time_max), or dpm (rate: the
@@ -35,19 +37,20 @@ oo::define ::fivax::motion::Planner {
         foreach p $pts {
             lassign $p jb Pb t - - flag
             lassign $ja X0 Y0 Z0 a1 a2
+            lassign $jb X1 Y1 Z1 b1 b2
+            # (as abs(), see Cost)
+            set d1 [expr {$b1 > $a1 ? $b1 - $a1 : $a1 - $b1}]
+            set d2 [expr {$b2 > $a2 ? $b2 - $a2 : $a2 - $b2}]
+            set S(travel) [expr {$S(travel) + $d1 + $d2}]
             if {$flag eq "retract"} {
                 lappend moves {*}[my Retract $prev $p $f $src \
                     [::fivax::motion::LimitReason $S(ctx) $a1 $a2 $t]]
             } else {
-                lassign $jb X1 Y1 Z1 b1 b2
                 lassign $Pa x0 y0 z0
                 lassign $Pb x1 y1 z1
                 # (vec::dist written out)
                 set d [expr {sqrt(($x1 - $x0) * ($x1 - $x0) + ($y1 - $y0) * ($y1 - $y0)
                     + ($z1 - $z0) * ($z1 - $z0))}]
-                # (as abs(), see Cost)
-                set d1 [expr {$b1 > $a1 ? $b1 - $a1 : $a1 - $b1}]
-                set d2 [expr {$b2 > $a2 ? $b2 - $a2 : $a2 - $b2}]
                 if {$d < 1e-9 && $d1 + $d2 > 1e-9} {
                     incr S(dwells)
                     set S(dwellTurn) [expr {$S(dwellTurn) + ($d1 + $d2)}]

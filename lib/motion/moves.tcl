@@ -29,22 +29,22 @@ oo::define ::fivax::motion::Planner {
         set b [::fivax::motion::Record $S(ctx) $P $t $q1 $q2 $lab $cone]
         if {$cone} {incr S(holds)}
         if {$S(last) eq ""} {
-            set moves [my First $kind $b $feed $src]
+            set moves [my Travel [my First $kind $b $feed $src]]
         } elseif {$kind eq "rapid"} {
-            set moves [my Transfer $S(last) $b $src]
+            set moves [my Travel [my Transfer $S(last) $b $src]]
         } else {
             lassign $S(last) ja - ta - al
             lassign $ja - - - a1 a2
             if {[::fivax::motion::Cost $S(ms1) $S(ms2) 1 $a1 $a2 $al $q1 $q2 $lab] < $S(retractCost)} {
                 # (as abs(), see Cost)
                 if {($q2 > $a2 ? $q2 - $a2 : $a2 - $q2) > $S(swingRad)} {my CountSwing $ta $t}
+                # (FeedMoves adds the travel of its moves itself)
                 set moves [my FeedMoves [my Linearise $S(last) $b 0 $src] $feed $src]
             } else {
-                set moves [my Retract $S(last) $b [my FeedClamp $feed] $src \
-                    [::fivax::motion::LimitReason $S(ctx) $a1 $a2 $t]]
+                set moves [my Travel [my Retract $S(last) $b [my FeedClamp $feed] $src \
+                    [::fivax::motion::LimitReason $S(ctx) $a1 $a2 $t]]]
             }
         }
-        my Travel $moves
         set S(last) $b
         set S(lastKind) $kind
         set S(lastSrc) $src
@@ -141,7 +141,8 @@ oo::define ::fivax::motion::Planner {
     }
 
     # Adds the rotary travel of moves (records made by Move: axes X Y Z,
-    # then the rotaries) to the statistics.
+    # then the rotaries) from the last written point to the statistics;
+    # returns moves.
     method Travel {moves} {
         set from [expr {$S(last) ne ""}]
         if {$from} {lassign [lindex $S(last) 0] - - - p1 p2}
@@ -156,6 +157,7 @@ oo::define ::fivax::motion::Planner {
             set p1 $q1
             set p2 $q2
         }
+        return $moves
     }
 
     # Counts a singular swing: called when the azimuth of a cutting move
