@@ -48,29 +48,21 @@ proc ::fivax::motion::Candidates {ctx t cone refs src} {
     }
     set cone [expr {$status eq "singular" || $cone}]
     if {!$cone || ![llength $refs] || ![llength [set out [Held $ctx $t $refs]]]} {
-        set out [Exact $ctx $sols $refs [expr {$cone || [llength $sols] < 2}]]
+        # the exact solutions (at most two), each axis value expanded to
+        # its in-limit aliases near refs; branch -1 for all where the
+        # branches merge, else the solution's index
+        lassign [dict get $ctx limits] lim1 lim2
+        set out {}
+        foreach xs [Aliases $lim1 0 $sols $refs] ys [Aliases $lim2 1 $sols $refs] \
+                lab [expr {$cone || [llength $sols] < 2 ? {-1 -1} : {0 1}}] {
+            foreach x $xs {
+                foreach y $ys {lappend out $x $y $lab}
+            }
+        }
     }
     if {![llength $out]} {
         ::fivax::Fail MOTION LIMIT "$src: tool axis ([AxisText $t]) needs a rotary value\
             outside the limits of [dict get $ctx name]"
-    }
-    return $out
-}
-
-# ::fivax::motion::Exact --
-#	Returns the flat candidate triples of the inverse solutions sols, each
-#	axis value expanded to its in-limit aliases near refs; branch -1 for
-#	all when merged is 1, else the solution's index.
-proc ::fivax::motion::Exact {ctx sols refs merged} {
-    lassign [dict get $ctx limits] lim1 lim2
-    set out {}
-    # (at most two solutions: branches 0 and 1)
-    foreach xs [Aliases $lim1 1 [lmap sol $sols {lindex $sol 0}] $refs] \
-            ys [Aliases $lim2 2 [lmap sol $sols {lindex $sol 1}] $refs] \
-            lab [expr {$merged ? {-1 -1} : {0 1}}] {
-        foreach x $xs {
-            foreach y $ys {lappend out $x $y $lab}
-        }
     }
     return $out
 }
@@ -98,7 +90,7 @@ proc ::fivax::motion::HoldTilt {ctx t r1 q2} {
     set best ""
     set bd Inf
     set q1 [BestTilt [dict get $ctx model] $t $q2]
-    foreach x [lindex [Aliases [lindex [dict get $ctx limits] 0] 1 [list $q1] [list $r1 $q2 -1]] 0] {
+    foreach x [lindex [Aliases [lindex [dict get $ctx limits] 0] 0 [list [list $q1]] [list $r1 $q2 -1]] 0] {
         if {abs($x - $r1) < $bd} {
             set bd [expr {abs($x - $r1)}]
             set best $x
@@ -123,18 +115,19 @@ proc ::fivax::motion::BestTilt {model t q2} {
 }
 
 # ::fivax::motion::Aliases --
-#	Returns, for each value q of qs, the values equivalent to q (mod 360
-#	deg) that axis i (1 tilt, 2 azimuth; lim its {min max continuous
-#	unlimited} from the context's limits) may take: all within the limits
-#	for a limited axis; for a continuous one the alias nearest each ref
-#	value (element i of the flat triples refs; with no refs q and its
-#	alias of the other sign), with its neighbours when the axis has finite
-#	limits.
-proc ::fivax::motion::Aliases {lim i qs refs} {
+#	Returns, for the value q of axis i (0 tilt, 1 azimuth; lim its {min
+#	max continuous unlimited} from the context's limits) in each {q1 q2}
+#	of sols, the values equivalent to q (mod 360 deg) that the axis may
+#	take: all within the limits for a limited axis; for a continuous one
+#	the alias nearest each ref value (element i of the flat triples refs;
+#	with no refs q and its alias of the other sign), with its neighbours
+#	when the axis has finite limits.
+proc ::fivax::motion::Aliases {lim i sols refs} {
     lassign $lim min max continuous unlimited
     # (6.283185307179586 is 2 pi)
     if {!$continuous} {
-        return [lmap q $qs {
+        return [lmap sol $sols {
+            set q [lindex $sol $i]
             if {$q >= $min && $q <= $max && $q - 6.283185307179586 < $min
                     && $q + 6.283185307179586 > $max} {
                 list $q
@@ -149,13 +142,14 @@ proc ::fivax::motion::Aliases {lim i qs refs} {
             }
         }]
     }
-    lmap q $qs {
+    lmap sol $sols {
+        set q [lindex $sol $i]
         if {![llength $refs]} {
             set try [list $q [expr {$q > 0 ? $q - 6.283185307179586 : $q + 6.283185307179586}]]
         } else {
             set try {}
             foreach {r1 r2 -} $refs {
-                set r [expr {$i == 1 ? $r1 : $r2}]
+                set r [expr {$i == 0 ? $r1 : $r2}]
                 set v [Near $q $r]
                 lappend try $v
                 if {!$unlimited} {

@@ -12,50 +12,78 @@ oo::define ::fivax::motion::Planner {
         expr {$feed < $S(feedMin) ? $S(feedMin) : $feed > $S(feedMax) ? $S(feedMax) : double($feed)}
     }
 
-    # Returns {mode feed rate tip} for the cutting move from point record
-    # a to b at tip feed f (mm/min): mode direct (rate f) when no rotary
-    # moves or -feed direct; else inverse (rate f/d, d the tip path length
-    # in the workpiece frame, at most inverse_time_max), or dpm (rate: the
+    # Returns the cutting moves through the point records pts (the last
+    # one the CL point, the others inserted) from the last written point
+    # at tip feed (mm/min, clamped here), and adds their rotary travel to
+    # the statistics (as Travel: a piece's rotaries turn once, so its
+    # travel is that of its ends); a record flagged retract is reached
+    # by a retract instead. The feed word of a move (mode and
+    # rate, see flush): direct (rate the tip feed f) when no rotary moves
+    # or -feed direct; else inverse (rate f/d, d the tip path length in
+    # the workpiece frame, at most inverse_time_max), or dpm (rate: the
     # combined length sqrt(dX^2+dY^2+dZ^2+dA^2+dB^2) (mm, deg) per block
     # time d/f, clamped to feed_min..feed_max).
     # Counts a dwell swing: a move that only turns the rotaries while the
     # tip stays put (at the singular direction, where the path leaves the
     # pole with another azimuth).
-    method FeedOf {a b f} {
-        lassign $a ja Pa
-        lassign $b jb Pb
-        lassign $ja X0 Y0 Z0 a1 a2
-        lassign $jb X1 Y1 Z1 b1 b2
-        # (vec::dist written out)
-        lassign $Pb x1 y1 z1
-        lassign $Pa x0 y0 z0
-        set x [expr {$x1 - $x0}]
-        set y [expr {$y1 - $y0}]
-        set z [expr {$z1 - $z0}]
-        set d [expr {sqrt($x * $x + $y * $y + $z * $z)}]
-        # (as abs(), see Cost)
-        set d1 [expr {$b1 > $a1 ? $b1 - $a1 : $a1 - $b1}]
-        set d2 [expr {$b2 > $a2 ? $b2 - $a2 : $a2 - $b2}]
-        if {$d < 1e-9 && $d1 + $d2 > 1e-9} {
-            incr S(dwells)
-            set S(dwellTurn) [expr {$S(dwellTurn) + ($d1 + $d2)}]
-        }
-        if {$S(feed) eq "direct" || ($d1 <= 1e-9 && $d2 <= 1e-9)} {
-            return [list direct $f $f $d]
-        }
-        if {$S(feed) eq "inverse"} {
-            if {$d * $S(itMax) > $f} {return [list inverse $f [expr {$f / $d}] $d]}
-            # clamped: the move runs slower than programmed
-            incr S(clamps)
-            if {$d > 0} {
-                set S(slowdown) [expr {max($S(slowdown), $f / $d / $S(itMax))}]
+    method FeedMoves {pts feed src} {
+        set f [my FeedClamp $feed]
+        set prev $S(last)
+        lassign $prev ja Pa
+        set moves {}
+        set last [expr {[llength $pts] - 1}]
+        incr S(inserted) $last
+        set i 0
+        foreach p $pts {
+            lassign $p jb Pb t - - flag
+            lassign $ja X0 Y0 Z0 a1 a2
+            lassign $jb X1 Y1 Z1 b1 b2
+            # (as abs(), see Cost)
+            set d1 [expr {$b1 > $a1 ? $b1 - $a1 : $a1 - $b1}]
+            set d2 [expr {$b2 > $a2 ? $b2 - $a2 : $a2 - $b2}]
+            set S(travel) [expr {$S(travel) + $d1 + $d2}]
+            if {$flag eq "retract"} {
+                lappend moves {*}[my Retract $prev $p $f $src \
+                    [::fivax::motion::LimitReason $S(ctx) $a1 $a2 $t]]
+            } else {
+                lassign $Pa x0 y0 z0
+                lassign $Pb x1 y1 z1
+                # (vec::dist written out)
+                set d [expr {sqrt(($x1 - $x0) * ($x1 - $x0) + ($y1 - $y0) * ($y1 - $y0)
+                    + ($z1 - $z0) * ($z1 - $z0))}]
+                if {$d < 1e-9 && $d1 + $d2 > 1e-9} {
+                    incr S(dwells)
+                    set S(dwellTurn) [expr {$S(dwellTurn) + ($d1 + $d2)}]
+                }
+                if {$S(feed) eq "direct" || ($d1 <= 1e-9 && $d2 <= 1e-9)} {
+                    set word [list direct $f $f $d]
+                } elseif {$S(feed) eq "inverse"} {
+                    if {$d * $S(itMax) > $f} {
+                        set word [list inverse $f [expr {$f / $d}] $d]
+                    } else {
+                        # clamped: the move runs slower than programmed
+                        incr S(clamps)
+                        if {$d > 0} {
+                            set S(slowdown) [expr {max($S(slowdown), $f / $d / $S(itMax))}]
+                        }
+                        set word [list inverse $f $S(itMax) $d]
+                    }
+                } elseif {$d <= 0} {
+                    set word [list dpm $f $S(feedMax) $d]
+                } else {
+                    set len [expr {sqrt(($X1 - $X0) ** 2 + ($Y1 - $Y0) ** 2 + ($Z1 - $Z0) ** 2
+                                        + [::fivax::num::deg [expr {$b1 - $a1}]] ** 2
+                                        + [::fivax::num::deg [expr {$b2 - $a2}]] ** 2)}]
+                    set word [list dpm $f [my FeedClamp [expr {$len * $f / $d}]] $d]
+                }
+                lappend moves [my Move feed $jb {X Y Z R} $Pb $t $word $src \
+                    [expr {$i < $last ? "inserted" : ""}]]
             }
-            return [list inverse $f $S(itMax) $d]
+            set prev $p
+            set ja $jb
+            set Pa $Pb
+            incr i
         }
-        if {$d <= 0} {return [list dpm $f $S(feedMax) $d]}
-        set len [expr {sqrt(($X1 - $X0) ** 2 + ($Y1 - $Y0) ** 2 + ($Z1 - $Z0) ** 2
-                            + [::fivax::num::deg [expr {$b1 - $a1}]] ** 2
-                            + [::fivax::num::deg [expr {$b2 - $a2}]] ** 2)}]
-        list dpm $f [my FeedClamp [expr {$len * $f / $d}]] $d
+        return $moves
     }
 }

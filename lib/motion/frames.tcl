@@ -119,17 +119,6 @@ oo::define ::fivax::motion::Planner {
         list 1 $moves
     }
 
-    # Adds CL point P, t (already in the workpiece frame) as add does.
-    method AddWork {kind P t feed src} {
-        incr S(points)
-        if {$S(rotary) eq "greedy"} {
-            return [my Greedy $kind $P $t $feed $src]
-        }
-        my Step $kind $P $t $feed $src
-        if {[llength $S(buf)] < $S(window)} {return {}}
-        my Commit 0
-    }
-
     # Starts watching a new operation for work-plane segments (see Route)
     # unless -workplane is off or the control has no work plane.
     method HoldPlane {} {

@@ -25,7 +25,6 @@ oo::define ::fivax::motion::Planner {
     # move ending outside the machine's travel.
     method Linearise {a b depth src} {
         if {$S(tol) <= 0} {return [list $b]}
-        namespace upvar ::fivax::motion retractCost retractCost
         lassign $a ja Pa ta acta la
         lassign $b jb Pb tb actb lb
         if {$depth == 0} {
@@ -33,7 +32,7 @@ oo::define ::fivax::motion::Planner {
             set S(pieces) 0
         }
         set ok [expr {[::fivax::motion::Cost $S(ms1) $S(ms2) 1 [lindex $ja 3] [lindex $ja 4] $la \
-            [lindex $jb 3] [lindex $jb 4] $lb] < $retractCost}]
+            [lindex $jb 3] [lindex $jb 4] $lb] < $S(retractCost)}]
         set n 2
         if {$ok} {
             # First the bound (kin interpolationBound): it proves most moves
@@ -89,12 +88,12 @@ oo::define ::fivax::motion::Planner {
 #	from one to the other about any great circle, so the CL path between
 #	them is undefined.
 proc ::fivax::motion::CheckFlip {ta tb src} {
-    variable pi
-    variable flipSlack
     # (axes with a positive dot product are less than 90 deg apart)
     lassign $ta ax ay az
     lassign $tb bx by bz
     if {$ax * $bx + $ay * $by + $az * $bz > 0.0} return
+    variable pi
+    variable flipSlack
     if {[::fivax::vec::angle $ta $tb] <= $pi - $flipSlack} return
     ::fivax::Fail MOTION FLIP "$src: the tool axis turns 180 deg in one cutting move\
         (([AxisText $ta]) to ([AxisText $tb])): the way it turns is undefined;\

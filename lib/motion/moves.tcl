@@ -15,7 +15,7 @@
 proc ::fivax::motion::Record {ctx P t q1 q2 lab cone} {
     set step [dict get $ctx step]
     set q [list [Quantize $step $q1] [Quantize $step $q2]]
-    set joints [concat [::fivax::kin::position [dict get $ctx model] $P $q] $q]
+    set joints [list {*}[::fivax::kin::position [dict get $ctx model] $P $q] {*}$q]
     if {!$cone} {return [list $joints $P $t $t $lab]}
     list $joints $P $t [lindex [::fivax::kin::forward [dict get $ctx model] $joints] 1] $lab
 }
@@ -26,26 +26,25 @@ oo::define ::fivax::motion::Planner {
     # moves: the rapid sequence, the linearised cutting moves, or a
     # retract, reposition and re-engage.
     method Emit {kind P t feed src cone q1 q2 lab} {
-        namespace upvar ::fivax::motion retractCost retractCost
         set b [::fivax::motion::Record $S(ctx) $P $t $q1 $q2 $lab $cone]
         if {$cone} {incr S(holds)}
         if {$S(last) eq ""} {
-            set moves [my First $kind $b $feed $src]
+            set moves [my Travel [my First $kind $b $feed $src]]
         } elseif {$kind eq "rapid"} {
-            set moves [my Transfer $S(last) $b $src]
+            set moves [my Travel [my Transfer $S(last) $b $src]]
         } else {
             lassign $S(last) ja - ta - al
             lassign $ja - - - a1 a2
-            if {[::fivax::motion::Cost $S(ms1) $S(ms2) 1 $a1 $a2 $al $q1 $q2 $lab] < $retractCost} {
+            if {[::fivax::motion::Cost $S(ms1) $S(ms2) 1 $a1 $a2 $al $q1 $q2 $lab] < $S(retractCost)} {
                 # (as abs(), see Cost)
                 if {($q2 > $a2 ? $q2 - $a2 : $a2 - $q2) > $S(swingRad)} {my CountSwing $ta $t}
+                # (FeedMoves adds the travel of its moves itself)
                 set moves [my FeedMoves [my Linearise $S(last) $b 0 $src] $feed $src]
             } else {
-                set moves [my Retract $S(last) $b [my FeedClamp $feed] $src \
-                    [::fivax::motion::LimitReason $S(ctx) $a1 $a2 $t]]
+                set moves [my Travel [my Retract $S(last) $b [my FeedClamp $feed] $src \
+                    [::fivax::motion::LimitReason $S(ctx) $a1 $a2 $t]]]
             }
         }
-        my Travel $moves
         set S(last) $b
         set S(lastKind) $kind
         set S(lastSrc) $src
@@ -141,42 +140,14 @@ oo::define ::fivax::motion::Planner {
         lappend moves [my Entry $b $f $src]
     }
 
-    # Returns the cutting moves through the point records pts (the last
-    # one the CL point, the others inserted) from the last written point,
-    # with the feed of each move (see FeedOf, which also counts dwells); a
-    # record flagged retract is reached by a retract instead.
-    method FeedMoves {pts feed src} {
-        set f [my FeedClamp $feed]
-        set prev $S(last)
-        set moves {}
-        set last [expr {[llength $pts] - 1}]
-        incr S(inserted) $last
-        set i 0
-        foreach p $pts {
-            lassign $p joints P t - - flag
-            if {$flag eq "retract"} {
-                lassign [lindex $prev 0] - - - a1 a2
-                lappend moves {*}[my Retract $prev $p $f $src \
-                    [::fivax::motion::LimitReason $S(ctx) $a1 $a2 $t]]
-            } else {
-                lappend moves [my Move feed $joints {X Y Z R} $P $t [my FeedOf $prev $p $f] $src \
-                    [expr {$i < $last ? "inserted" : ""}]]
-            }
-            set prev $p
-            incr i
-        }
-        return $moves
-    }
-
     # Adds the rotary travel of moves (records made by Move: axes X Y Z,
-    # then the rotaries) to the statistics.
+    # then the rotaries) from the last written point to the statistics;
+    # returns moves.
     method Travel {moves} {
         set from [expr {$S(last) ne ""}]
         if {$from} {lassign [lindex $S(last) 0] - - - p1 p2}
         foreach move $moves {
-            set axes [dict get $move axes]
-            set q1 [lindex $axes 7]
-            set q2 [lindex $axes 9]
+            lassign [dict get $move axes] - - - - - - - q1 - q2
             if {$from} {
                 # (as abs(), see Cost)
                 set S(travel) [expr {$S(travel) + ($q1 > $p1 ? $q1 - $p1 : $p1 - $q1)
@@ -186,6 +157,7 @@ oo::define ::fivax::motion::Planner {
             set p1 $q1
             set p2 $q2
         }
+        return $moves
     }
 
     # Counts a singular swing: called when the azimuth of a cutting move

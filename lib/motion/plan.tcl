@@ -128,6 +128,9 @@ oo::class create ::fivax::motion::Planner {
         # -atol 0: no check of the tool axis between blocks
         set S(atolCheck) [expr {$S(atol) > 0 ? [::fivax::num::rad $S(atol)] : Inf}]
         set S(swingRad) [::fivax::num::rad $S(swing)]
+        # the cost of a retract (see Cost), for the per-point tests
+        namespace upvar ::fivax::motion retractCost retractCost
+        set S(retractCost) $retractCost
         lassign $S(weights) S(w1) S(w2)
         # Per-axis data in chain order (tilt, azimuth) for the candidates.
         set S(axes) {}
@@ -197,7 +200,7 @@ oo::class create ::fivax::motion::Planner {
         lassign [my Route [list add $kind $P $t $feed $src] $t] done pre
         if {$done} {return $pre}
         lassign [my ToWork $P $t] P t
-        concat $pre [my AddWork $kind $P [::fivax::vec::unit $t] $feed $src]
+        list {*}$pre {*}[my AddWork $kind $P [::fivax::vec::unit $t] $feed $src]
     }
 
     # Returns every move record still held. A move record is a dict:
@@ -291,7 +294,6 @@ oo::class create ::fivax::motion::Planner {
     # at a fresh start, else the nearest one that needs no retract (the
     # nearest of all, with a retract, when none does).
     method Greedy {kind P t feed src} {
-        namespace upvar ::fivax::motion retractCost retractCost
         set ctx $S(ctx)
         set refs [my LastRefs]
         set cone [::fivax::motion::InCone $ctx $t]
@@ -305,7 +307,7 @@ oo::class create ::fivax::motion::Planner {
             set isFeed [expr {$kind eq "feed"}]
             set ok {}
             foreach {b1 b2 bl} $cands {
-                if {[::fivax::motion::Cost $ms1 $ms2 $isFeed $a1 $a2 $al $b1 $b2 $bl] < $retractCost} {
+                if {[::fivax::motion::Cost $ms1 $ms2 $isFeed $a1 $a2 $al $b1 $b2 $bl] < $S(retractCost)} {
                     lappend ok $b1 $b2 $bl
                 }
             }
@@ -319,13 +321,18 @@ oo::class create ::fivax::motion::Planner {
         my Emit $kind $P $t $feed $src $cone {*}$choice
     }
 
-    # Adds one CL point to the optimiser's buffer as a layer
+    # Adds CL point P, t (already in the workpiece frame) as add does:
+    # greedy, or to the optimiser's buffer as a layer
     # {kind P t feed src states cone}, states being the flat list
     # {q1 q2 branch cost back ...}: cost of the best path from the last
     # written point (normalised to a minimum of 0), back the index of its
     # predecessor in the previous layer (-1 for the first layer); cone is
-    # InCone of t.
-    method Step {kind P t feed src} {
+    # InCone of t. Returns the moves of a full window's settled part.
+    method AddWork {kind P t feed src} {
+        incr S(points)
+        if {$S(rotary) eq "greedy"} {
+            return [my Greedy $kind $P $t $feed $src]
+        }
         set ctx $S(ctx)
         if {[llength $S(buf)]} {
             set prev [lindex $S(buf) end 5]
@@ -357,9 +364,11 @@ oo::class create ::fivax::motion::Planner {
             }
         }
         lappend S(buf) [list $kind $P $t $feed $src $states $cone]
+        if {[llength $S(buf)] < $S(window)} {return {}}
+        my Commit 0
     }
 
-    # Returns the states (see Step) of the candidate triples cands reached
+    # Returns the states (see AddWork) of the candidate triples cands reached
     # from the states prev by a move of the given kind (isFeed 1: cutting).
     # With -on-limit error, moves needing a retract are excluded and a
     # layer left unreachable raises {FIVAX MOTION LIMIT} naming src. States
@@ -379,7 +388,7 @@ oo::class create ::fivax::motion::Planner {
             set i 0
             foreach {a1 a2 al ac -} $prev {
                 set c [::fivax::motion::Cost $ms1 $ms2 $isFeed $a1 $a2 $al $b1 $b2 $bl $w1 $w2]
-                if {!($err && $c >= $::fivax::motion::retractCost) && $ac + $c < $best} {
+                if {!($err && $c >= $S(retractCost)) && $ac + $c < $best} {
                     set best [expr {$ac + $c}]
                     set arg $i
                 }
