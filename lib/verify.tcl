@@ -47,7 +47,9 @@ namespace eval ::fivax::verify {
     # How the words of a block are found, per dialect:
     #   comment  regexp of comment text, removed before reading words; the
     #            text of each (the first capture group) is returned
-    #   skip     regexp of whole lines that are not blocks (% and O1000)
+    #   skip     regexp of whole lines that are not blocks (% and O1000);
+    #            of the lines of plain words (lineRe) it may match only
+    #            those of one word (it is not tried on the others)
     #   word     regexp of one address word, matched with -all -inline
     #            (one flat pattern: capture groups cost 30 times more)
     #   syntax   gcode (ISO words), sinumerik (ISO words and the keywords
@@ -142,7 +144,7 @@ proc ::fivax::verify::LineRe {re} {
 oo::class create ::fivax::verify::Checker {
     # S: machine, tableOffset, the dialect's comment skip word syntax
     # (its table entry), lineRe, plainText, pi, the tables CycleG KnownG
-    # KnownLetters, rolling, axis:NAME, model, the modal state X Y
+    # KnownLetters, rolling, rotaries (the chain's names), axis:NAME, model, the modal state X Y
     # Z q1 q2 motion (0/1) mode (direct/inverse) F, prev (the last checked
     # block) and the statistics (see summary).
     variable S
@@ -171,6 +173,7 @@ oo::class create ::fivax::verify::Checker {
         }
         # axis:NAME -> {key lo hi}: the rotary's modal value (q1, q2) and
         # its bounds (radians: the limits widened by machine outside's slack)
+        set S(rotaries) $names
         set bounds [dict get $machine bounds]
         foreach name $names key {q1 q2} {
             set S(axis:$name) [list $key {*}[dict get $bounds $name]]
@@ -218,15 +221,15 @@ oo::class create ::fivax::verify::Checker {
     #            are then at the hole's bottom, and the modal Z afterwards
     #            is the level the cycle returns to
     method read {line} {
-        lassign [my Read $line 1] joints pose space limit arc block moved F pairs comments unknown hole
+        lassign [my Read $line 1] joints pose space limit arc hole block moved F pairs comments unknown
         dict create block $block motion $S(motion) moved $moved joints $joints pose $pose \
             space $space arc $arc mode $S(mode) F $F feed $S(F) words $pairs \
             comments $comments limit $limit unknown $unknown hole $hole
     }
 
     # Reads one NC line as read does (see there) and returns the values of
-    # its dict as a list: joints pose space limit arc block moved F words
-    # comments unknown hole (the post's check takes the first five, and
+    # its dict as a list: joints pose space limit arc hole block moved F
+    # words comments unknown (the post's check takes the first six, and
     # words are gathered only when wantPairs is 1).
     method Read {line wantPairs} {
         set comments {}
@@ -234,6 +237,7 @@ oo::class create ::fivax::verify::Checker {
             # plain words (every ISO block fivax writes): no comment, no keyword
             set text $line
             set plain 1
+            set skip [expr {[string first " " $line] < 0 && [regexp -- $S(skip) $line]}]
         } else {
             set text $line
             switch -exact -- $S(syntax) {
@@ -248,9 +252,10 @@ oo::class create ::fivax::verify::Checker {
             }
             # a line of plain words is split at its spaces
             set plain [expr {$S(lineRe) ne "" && [regexp -- $S(lineRe) $text]}]
+            set skip [expr {(!$plain && [string trim $text] eq "") || [regexp -- $S(skip) $line]}]
         }
-        if {(!$plain && [string trim $text] eq "") || [regexp -- $S(skip) $line]} {
-            return [list {*}[my State] {} {} 0 {} "" {} $comments {} 0]
+        if {$skip} {
+            return [list {*}[my State] {} {} 0 0 {} "" {} $comments {}]
         }
         set unknown {}
         if {$plain} {
@@ -295,7 +300,7 @@ oo::class create ::fivax::verify::Checker {
         }
         if {$planeSet} {
             my PlaneWords $words
-            return [list {*}[my State] {} {} 1 {} "" {} $comments {} 0]
+            return [list {*}[my State] {} {} 0 1 {} "" {} $comments {}]
         }
         set hole 0
         set start [list $S(X) $S(Y) $S(Z)]
@@ -352,7 +357,7 @@ oo::class create ::fivax::verify::Checker {
                     }
                 }
             }
-            if {[info exists S(axis:$letter)]} {
+            if {$letter in $S(rotaries)} {
                 # the value in radians (num rad, written out) against the limits
                 lassign $S(axis:$letter) key lo hi
                 set q [expr {$x * $S(pi) / 180.0}]
@@ -426,7 +431,7 @@ oo::class create ::fivax::verify::Checker {
         } else {
             set state [my State]
         }
-        list {*}$state $limit $arc 1 $moved $F $pairs $comments $unknown $hole
+        list {*}$state $limit $arc $hole 1 $moved $F $pairs $comments $unknown
     }
 
     # Reads a G68.2 block (words): the work plane's origin X Y Z and its
@@ -583,23 +588,24 @@ oo::class create ::fivax::verify::Checker {
     # workpiece frame) and what X Y Z are (plane, tcp or joint); joints
     # and pose are "" while an axis they need is unknown.
     method State {} {
-        set xyz [list $S(X) $S(Y) $S(Z)]
+        set joints [list $S(X) $S(Y) $S(Z) $S(q1) $S(q2)]
         if {$S(frame) ne ""} {
+            set xyz [lrange $joints 0 2]
             if {"" in $xyz} {return {{} {} plane}}
             lassign $S(frame) R O
             return [list "" [list [::fivax::plane::fromPlane $R $O $xyz] \
                 [lmap row $R {lindex $row 2}]] plane]
         }
-        if {"" in $xyz || $S(q1) eq "" || $S(q2) eq ""} {
+        if {"" in $joints} {
             return [list "" "" [expr {$S(tcp) ? "tcp" : "joint"}]]
         }
-        set q [list $S(q1) $S(q2)]
-        if {$S(tcp)} {
-            set t [lindex [::fivax::kin::forward $S(model) [list 0.0 0.0 0.0 {*}$q]] 1]
-            return [list [concat [::fivax::kin::position $S(model) $xyz $q] $q] [list $xyz $t] tcp]
+        if {!$S(tcp)} {
+            return [list $joints [::fivax::kin::forward $S(model) $joints] joint]
         }
-        set joints [concat $xyz $q]
-        list $joints [::fivax::kin::forward $S(model) $joints] joint
+        set xyz [lrange $joints 0 2]
+        set q [lrange $joints 3 4]
+        set t [lindex [::fivax::kin::forward $S(model) [list 0.0 0.0 0.0 {*}$q]] 1]
+        list [concat [::fivax::kin::position $S(model) $xyz $q] $q] [list $xyz $t] tcp
     }
 
     # Returns {P t}: tool tip and axis (workpiece frame) at joints.
@@ -621,8 +627,8 @@ oo::class create ::fivax::verify::Checker {
     # interpolation from j0 to j1; a rotary that rolls over turns the
     # shortest way.
     method interior {j0 j1 P0 P1 t0 t1} {
-        lassign [::fivax::kin::interpolationError $S(model) $j0 [my Rolled $j0 $j1] \
-            $P0 $P1 $t0 $t1] dp da
+        if {$S(rolling) ne ""} {set j1 [my Rolled $j0 $j1]}
+        lassign [::fivax::kin::interpolationError $S(model) $j0 $j1 $P0 $P1 $t0 $t1] dp da
         list $dp [::fivax::num::deg $da]
     }
 
@@ -635,24 +641,6 @@ oo::class create ::fivax::verify::Checker {
             lset j1 $i [expr {$a + $d - 2.0 * $S(pi) * round($d / (2.0 * $S(pi)))}]
         }
         return $j1
-    }
-
-    # Raises {FIVAX MACHINE LIMIT} with the move's FILE:LINE (machine
-    # checkLimits) when the block read (joints and limit as read returns
-    # them) leaves the machine's X Y Z travel (its machine X Y Z, when
-    # known) or a rotary's limits.
-    method CheckLimits {joints limit line move} {
-        set values {}
-        if {$joints ne ""} {
-            lassign $joints x y z
-            set values [list X $x Y $y Z $z]
-        }
-        foreach axis $limit {
-            dict set values $axis $S([lindex $S(axis:$axis) 0])
-        }
-        set where [dict get $move src]
-        if {$where eq ""} {set where "NC block '$line'"}
-        ::fivax::machine::checkLimits $S(machine) $values $where
     }
 
     # Returns the angle (deg) between the tool axis t and the direction
@@ -688,9 +676,12 @@ oo::class create ::fivax::verify::Checker {
             tool axis %.3f deg off it" $where $off]
     }
 
-    # Reads the NC line (the post's own block) and, when move (a motion
-    # move record) carries a CL target (P, t), measures the deviation of
-    # the block's pose at its end and, for joint-space cutting moves (the
+    # Reads the NC line (the post's own block), refuses it with the
+    # move's FILE:LINE when it leaves the machine's travel or a rotary's
+    # limits (machine checkLimits) or, in a canned cycle, drills off the
+    # tool axis (CheckDrill), and, when move (a motion move record)
+    # carries a CL target (P, t), measures the deviation of the block's
+    # pose at its end and, for joint-space cutting moves (the
     # control interpolates the joints linearly), inside the block. In TCP
     # mode and in a work plane the control keeps the tip on the line (or
     # arc) itself: the end is what is checked. Inside the block the
@@ -699,8 +690,22 @@ oo::class create ::fivax::verify::Checker {
     # cannot exceed the largest deviation found so far (which is all the
     # summary keeps).
     method block {line move} {
-        lassign [my Read $line 0] joints pose space limit arc - - - - - - hole
-        if {$limit ne "" || $joints ne ""} {my CheckLimits $joints $limit $line $move}
+        lassign [my Read $line 0] joints pose space limit arc hole
+        if {$limit ne "" || $joints ne ""} {
+            # the machine X Y Z (when known) and the rotaries read outside
+            # their limits
+            set values {}
+            if {$joints ne ""} {
+                lassign $joints x y z
+                set values [list X $x Y $y Z $z]
+            }
+            foreach axis $limit {
+                dict set values $axis $S([lindex $S(axis:$axis) 0])
+            }
+            set where [dict get $move src]
+            if {$where eq ""} {set where "NC block '$line'"}
+            ::fivax::machine::checkLimits $S(machine) $values $where
+        }
         if {$hole && $pose ne ""} {my CheckDrill $joints $pose $space $line $move}
         set P [dict get $move P]
         if {$P eq "" || $pose eq ""} {
