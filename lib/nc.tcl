@@ -7,7 +7,7 @@
 #	every method returns text; nothing here writes a file.
 #
 #	A Writer keeps per address one list {mode kind spec leader trailer lo
-#	hi limits}:
+#	hi limits format}:
 #	    mode  m = modal (written when its text changes), w = always written,
 #	          s = suppressed, W = forced once, S = suppressed once;
 #	    kind  f = printf real, F = printf real with a + flag, d = printf
@@ -16,7 +16,8 @@
 #	    lo hi the bounds of limits as numbers, -Inf and Inf where there
 #	          is none, so a block tests a value with two comparisons;
 #	    limits {} or {min minAction max maxAction} (NX's MIN/MAX with
-#	          abort, warning or truncate; "" for no bound).
+#	          abort, warning or truncate; "" for no bound);
+#	    format the format string as given (printf or &abcdef).
 #	The mode is derived from the flags {base forceAlways suppressAlways
 #	once} by Mode, so the hot path reads one element.
 #
@@ -30,6 +31,11 @@ namespace eval ::fivax::nc {
     # FmtCache(F): {kind spec} for every format string parsed so far.
     variable FmtCache
     array set FmtCache {}
+    # Plain: the Writer of format, with PlainAddress(F) its always-written
+    # address without leader in format F.
+    variable Plain
+    variable PlainAddress
+    array set PlainAddress {}
 
     variable Options {
         {-sequence bool 1 "" "write N sequence numbers"}
@@ -104,9 +110,8 @@ oo::class create ::fivax::nc::Writer {
             ::fivax::Fail NC OPTION "wrong # args: should be \"address name ?-option value ...?\""
         }
         if {[info exists Addr($name)]} {
-            lassign $Addr($name) mode kind spec leader trailer - - limits
+            lassign $Addr($name) mode kind spec leader trailer - - limits fmt
             lassign $Flags($name) base fa sa once
-            set fmt [lindex $spec end]
         } else {
             if {$name eq "" || [regexp {[\s,]} $name]} {
                 ::fivax::Fail NC ADDRESS "bad address name \"$name\""
@@ -144,7 +149,7 @@ oo::class create ::fivax::nc::Writer {
         if {$hi eq ""} {set hi Inf}
         set Flags($name) [list $base $fa $sa $once]
         set Addr($name) [list [::fivax::nc::Mode $base $fa $sa $once] $kind $spec $leader \
-            $trailer $lo $hi $limits]
+            $trailer $lo $hi $limits $fmt]
         return $name
     }
 
@@ -208,8 +213,14 @@ oo::class create ::fivax::nc::Writer {
                     ::fivax::Fail NC VALUE "address $name: value is not finite: $v"
                 } elseif {$kind eq "d"} {
                     set t [::format $spec [expr {round($x)}]]
+                } elseif {$kind eq "a"} {
+                    set t [::fivax::nc::Amp $spec $x]
                 } else {
-                    set t [::fivax::nc::FormatNumber $kind $spec $x]
+                    # printf reals, never -0
+                    set t [::format $spec $x]
+                    if {[string match -* $t] && ![string match {*[1-9]*} $t]} {
+                        set t [expr {$kind eq "F" ? "+" : ""}][string range $t 1 end]
+                    }
                 }
             } elseif {$v eq ""} {
                 continue
@@ -368,7 +379,7 @@ oo::class create ::fivax::nc::Writer {
         if {$kind eq "d"} {
             set text $leader[::format $spec $S(seqNext)]$trailer$S(sep)$text$S(eol)
         } else {
-            set text $leader[::fivax::nc::FormatValue $kind $spec $S(seqNext)]$trailer$S(sep)$text$S(eol)
+            set text $leader[::fivax::nc::format [lindex $Addr(N) 8] $S(seqNext)]$trailer$S(sep)$text$S(eol)
         }
         incr S(seqNext) $S(seqIncr)
         return $text
@@ -408,13 +419,25 @@ oo::class create ::fivax::nc::Writer {
 }
 
 # ::fivax::nc::format --
-#	Returns value written in format F (printf or &abcdef), without leader.
-#	Never returns -0. A non-numeric value under a numeric format is
-#	returned unchanged (an already formatted code).
+#	Returns value written in format F (printf or &abcdef), without leader:
+#	the word of a Writer's always-written address (see block). Never
+#	returns -0. A non-numeric value under a numeric format is returned
+#	unchanged (an already formatted code).
 #	Errors: {FIVAX NC FORMAT} for a bad format, {FIVAX NC VALUE} for Inf/NaN.
 proc ::fivax::nc::format {F value} {
-    lassign [ParseFormat $F] kind spec
-    FormatValue $kind $spec $value
+    variable Plain
+    variable PlainAddress
+    if {![info exists PlainAddress($F)]} {
+        ParseFormat $F
+        if {![info exists Plain]} {set Plain [create -sequence 0]}
+        set PlainAddress($F) [$Plain address f[array size PlainAddress] -leader "" \
+            -force always -format $F]
+    }
+    try {
+        $Plain block [list $PlainAddress($F) $value] 0
+    } trap {FIVAX NC VALUE} {} {
+        ::fivax::Fail NC VALUE "value is not finite: $value"
+    }
 }
 
 # ::fivax::nc::Limit --
@@ -480,34 +503,6 @@ proc ::fivax::nc::ParseFormat {F} {
     }
     set FmtCache($F) $r
     return $r
-}
-
-# ::fivax::nc::FormatValue -- Returns value in the parsed format {kind spec} (slow path of block).
-proc ::fivax::nc::FormatValue {kind spec v} {
-    if {$kind eq "s"} {
-        if {[string match -* $v] && [string is double -strict $v] && $v == 0} {
-            return [string range $v 1 end]
-        }
-        return $v
-    }
-    if {([string is double -strict $v] && ![string is entier -strict $v])
-        || [scan $v %lf%c x junk] == 1} {
-        if {![info exists x]} {set x $v}
-        if {!($x > -Inf && $x < Inf)} {::fivax::Fail NC VALUE "value is not finite: $v"}
-        if {$kind eq "d"} {return [::format $spec [expr {round($x)}]]}
-        return [FormatNumber $kind $spec $x]
-    }
-    return $v
-}
-
-# ::fivax::nc::FormatNumber -- Returns the finite double x in format kind f, F or a; never -0.
-proc ::fivax::nc::FormatNumber {kind spec x} {
-    if {$kind eq "a"} {return [Amp $spec $x]}
-    set t [::format $spec $x]
-    if {[string match -* $t] && ![string match {*[1-9]*} $t]} {
-        set t [expr {$kind eq "F" ? "+" : ""}][string range $t 1 end]
-    }
-    return $t
 }
 
 # ::fivax::nc::Amp --
