@@ -62,11 +62,13 @@ oo::class create ::fivax::clsf::Reader {
     # (bytes after the chunk's last line end), bytes (bytes read so far),
     # eof, skip (1: dropping the rest of an over-long line), partStart and
     # partBytes (where the chunk starts in the input, and its length in
-    # bytes), count (records handed out), progress and tick (the progress
-    # command when the reader was made, and the count it runs at next).
+    # bytes), count (records handed out up to the last progress call),
+    # progress (the progress command when the reader was made), every and
+    # tick (the records between two progress calls, and how many are left
+    # to the next one: never reached without a command).
     # (The hot path of next uses few of them: each costs on every call.)
     variable chan name line own saved lines idx carry bytes eof skip partStart partBytes \
-        count progress tick
+        count progress every tick
 
     constructor {aChan aName aOwn} {
         set chan $aChan
@@ -85,7 +87,8 @@ oo::class create ::fivax::clsf::Reader {
         set partBytes 0
         set count 0
         set progress $::fivax::clsf::progress
-        set tick [expr {$progress eq "" ? Inf : $::fivax::clsf::progressEvery}]
+        set every [expr {$progress eq "" ? 1 << 62 : $::fivax::clsf::progressEvery}]
+        set tick $every
     }
 
     destructor {
@@ -131,15 +134,21 @@ oo::class create ::fivax::clsf::Reader {
             set line $n
             set rec [::fivax::clsf::parse $text $name $first]
             if {[dict size $rec]} {
-                if {[incr count] >= $tick} {
-                    incr tick $::fivax::clsf::progressEvery
-                    {*}$progress $count {*}[my position]
-                }
+                if {[incr tick -1] <= 0} {my Progress}
                 return $rec
             }
         }
         set line $n
         return {}
+    }
+
+    # Calls the progress command (every records handed out since the
+    # last call) and sets the count to the next call.
+    method Progress {} {
+        incr count $every
+        set every $::fivax::clsf::progressEvery
+        set tick $every
+        {*}$progress $count {*}[my position]
     }
 
     # Returns text (the first physical line of a record, at line first)
@@ -316,6 +325,8 @@ proc ::fivax::clsf::progress {cmd} {
 #	refusal: NUL, "TEXT", a space and the reason (a decoded line never
 #	holds NUL).
 proc ::fivax::clsf::Decode {part} {
+    # printable ASCII, tabs and \n only (the common case): one scan
+    if {![regexp {[^\t\n\x20-\x7e]} $part]} {return [split $part \n]}
     if {[string first \r $part] >= 0} {set part [string map {\r\n \n \r \n} $part]}
     set lines [split $part \n]
     if {[string is ascii $part] && ![regexp {[\x00-\x08\x0b-\x1f\x7f]} $part]} {
@@ -440,7 +451,9 @@ proc ::fivax::clsf::PlainGoto {rest file line} {
     } else {
         return {}
     }
-    if {$end != [string length $rest] || !(abs($x) < Inf && abs($y) < Inf && abs($z) < Inf)} {
+    # (finite: between the infinities; abs() is a command call in expr)
+    if {$end != [string length $rest]
+            || !($x < Inf && $x > -Inf && $y < Inf && $y > -Inf && $z < Inf && $z > -Inf)} {
         return {}
     }
     dict create kind GOTO file $file line $line point [list $x $y $z] axis $axis
@@ -504,7 +517,9 @@ proc ::fivax::clsf::Axis {i j k file line major label} {
 #	more than 1e-3 (or is not finite).
 proc ::fivax::clsf::Unit {u v w} {
     set len [expr {sqrt($u * $u + $v * $v + $w * $w)}]
-    if {!(abs($len - 1.0) <= 1e-3)} {return ""}
+    # (|len - 1| <= 1e-3 as two comparisons: abs() is a command call in expr)
+    set off [expr {$len - 1.0}]
+    if {!($off <= 1e-3 && $off >= -1e-3)} {return ""}
     if {$len != 1.0} {
         return [list [expr {$u / $len}] [expr {$v / $len}] [expr {$w / $len}]]
     }

@@ -51,6 +51,9 @@ namespace eval ::fivax::mom {
     # MOM_name (MOM_abort_event leaves the handler quietly). The event
     # being fired is the variable event of the post interpreter's
     # namespace ::fivax::mom::runtime (for MOM_ask_event_type).
+    # (The position arrays are linked by global, so that lassign sets
+    # local names; an error puts the event back by an on-error handler,
+    # which unlike finally costs nothing when there is none.)
     variable dispatch {{ops} {
         variable event
         set saved $event
@@ -60,12 +63,14 @@ namespace eval ::fivax::mom {
                     v {set ::$name $value}
                     a {array set ::$name $value}
                     p {
-                        lassign $name ::mom_prev_mcs_goto(0) ::mom_prev_mcs_goto(1) \
-                            ::mom_prev_mcs_goto(2) ::mom_prev_tool_axis(0) \
-                            ::mom_prev_tool_axis(1) ::mom_prev_tool_axis(2)
-                        lassign $value ::mom_mcs_goto(0) ::mom_mcs_goto(1) ::mom_mcs_goto(2) \
-                            ::mom_tool_axis(0) ::mom_tool_axis(1) ::mom_tool_axis(2)
-                        lassign $value ::mom_pos(0) ::mom_pos(1) ::mom_pos(2)
+                        global mom_prev_mcs_goto mom_prev_tool_axis mom_mcs_goto mom_tool_axis \
+                            mom_pos
+                        lassign $name mom_prev_mcs_goto(0) mom_prev_mcs_goto(1) \
+                            mom_prev_mcs_goto(2) mom_prev_tool_axis(0) \
+                            mom_prev_tool_axis(1) mom_prev_tool_axis(2)
+                        lassign $value mom_mcs_goto(0) mom_mcs_goto(1) mom_mcs_goto(2) \
+                            mom_tool_axis(0) mom_tool_axis(1) mom_tool_axis(2)
+                        lassign $value mom_pos(0) mom_pos(1) mom_pos(2)
                     }
                     e {
                         set event $name
@@ -73,9 +78,11 @@ namespace eval ::fivax::mom {
                     }
                 }
             }
-        } finally {
+        } on error {msg opts} {
             set event $saved
+            return -options $opts $msg
         }
+        set event $saved
     } ::fivax::mom::runtime}
     # MOM_* commands with behaviour (implemented by Cmd<name> below).
     variable commands {
@@ -379,7 +386,8 @@ oo::class create ::fivax::mom::Runtime {
     #	handlers of one record run in one crossing). Returns 1 if the post
     #	has the handler.
     method Fire {event {now 1}} {
-        set has [my Has MOM_$event]
+        # (Has answers once per name: its answer is read here without a call)
+        set has [expr {[info exists S(has:MOM_$event)] ? $S(has:MOM_$event) : [my Has MOM_$event]}]
         if {$has} {
             incr S(events)
             lappend S(ops) e $event {}
@@ -697,7 +705,8 @@ oo::class create ::fivax::mom::Runtime {
     #	runtime does no kinematics.
     method SetPosition {point axis} {
         set position [concat $point $axis]
-        if {$S(point) eq ""} {set S(position) $position}
+        # (llength: eq would make the previous point's string for nothing)
+        if {![llength $S(point)]} {set S(position) $position}
         lappend S(ops) p $S(position) $position
         set S(point) $point
         set S(position) $position
@@ -1031,24 +1040,19 @@ oo::class create ::fivax::mom::Runtime {
         }
     }
 
-    # Write -- Writes one NC line to the output channel.
-    method Write {text} {
-        if {$text eq ""} return
-        incr S(blocks)
-        if {$S(channel) ne ""} {puts $S(channel) $text}
-    }
-
-    # MOM_output_text: one literal line, never numbered.
+    # MOM_output_text: one literal line, never numbered, to the output
+    # channel (an empty one is not written); every line goes out here.
     method Cmd_output_text {text args} {
-        my Write $text
+        if {$text ne ""} {
+            incr S(blocks)
+            if {$S(channel) ne ""} {puts $S(channel) $text}
+        }
         return $text
     }
 
     # MOM_output_literal: one literal line, numbered when sequencing is on.
     method Cmd_output_literal {text args} {
-        set line [$S(nc) line $text]
-        my Write $line
-        return $line
+        my Cmd_output_text [$S(nc) line $text]
     }
 
     # MOM_do_template: formats a .def block template with the post's globals.
@@ -1080,7 +1084,7 @@ oo::class create ::fivax::mom::Runtime {
             lappend words $addr $value
         }
         set line [$S(nc) block $words]
-        if {$mode ne "CREATE"} {my Write $line}
+        if {$mode ne "CREATE"} {my Cmd_output_text $line}
         return $line
     }
 
