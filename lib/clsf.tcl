@@ -110,22 +110,30 @@ oo::class create ::fivax::clsf::Reader {
 
     # Returns the next record dict, or {} at end of file. Joins "$"
     # continuations, drops "$$" comments, blank lines and PAINT. After an
-    # error the reader stays usable: the bad record is consumed.
+    # error the reader stays usable: the bad record is consumed. A line
+    # that is a plain GOTO record (PlainGoto) is read at once; any other
+    # goes through parse.
     method next {} {
         set n $line
         while {1} {
             set text [lindex $lines $idx]
             incr idx
+            set first [incr n]
+            if {[string match GOTO/* $text]} {
+                set rec [::fivax::clsf::PlainGoto $text $name $first]
+                if {[dict size $rec]} break
+            }
             if {[string index $text 0] eq "\0"} {
                 # the end of the chunk, or a refused line
                 if {$text eq "\0"} {
+                    incr n -1
                     if {[my Fill]} continue
-                    break
+                    set line $n
+                    return {}
                 }
-                set line [incr n]
+                set line $n
                 my Refuse $text $n
             }
-            set first [incr n]
             if {[string first "\$" $text] >= 0} {
                 set text [my Join $text $first n]
             }
@@ -133,13 +141,11 @@ oo::class create ::fivax::clsf::Reader {
             if {$text eq ""} {continue}
             set line $n
             set rec [::fivax::clsf::parse $text $name $first]
-            if {[dict size $rec]} {
-                if {[incr tick -1] <= 0} {my Progress}
-                return $rec
-            }
+            if {[dict size $rec]} break
         }
         set line $n
-        return {}
+        if {[incr tick -1] <= 0} {my Progress}
+        return $rec
     }
 
     # Calls the progress command (every records handed out since the
@@ -363,10 +369,6 @@ proc ::fivax::clsf::Control {text} {
 #	Returns the record dict for one logical record text (joined, without
 #	comments) found at file:line, or {} for PAINT. Never evaluates text.
 proc ::fivax::clsf::parse {text file line} {
-    if {[string range $text 0 4] eq "GOTO/"} {
-        set rec [PlainGoto [string range $text 5 end] $file $line]
-        if {[dict size $rec]} {return $rec}
-    }
     set slash [string first / $text]
     if {$slash >= 0} {
         set major [string toupper [string trim [string range $text 0 [expr {$slash - 1}]]]]
@@ -435,24 +437,27 @@ proc ::fivax::clsf::parse {text file line} {
 }
 
 # ::fivax::clsf::PlainGoto --
-#	The fast path of a record "GOTO/rest" as NX writes it: returns its
-#	record when rest is exactly 3 or 6 finite decimal numbers and the
-#	axis is a unit vector, else {} (parse then reads it token by token,
+#	The fast path of a physical line "GOTO/rest" as NX writes it (the
+#	reader's next tries it first): returns its record when rest is exactly
+#	3 or 6 finite decimal numbers and the axis is a unit vector, else {}
+#	(the line then goes through parse, which reads it token by token,
 #	with the errors). The numbers scan reads are those of num::parse:
 #	hex, binary, octal and nan stop it, Inf fails the finite test, the
 #	white space it skips before a number is white space string trim
-#	removes, and %n proves nothing is left over.
-proc ::fivax::clsf::PlainGoto {rest file line} {
-    if {[scan $rest %lf,%lf,%lf,%lf,%lf,%lf%n x y z i j k end] == 7} {
+#	removes, and %n proves nothing is left over (no "$", no comment, no
+#	white space at the end).
+proc ::fivax::clsf::PlainGoto {text file line} {
+    if {[scan $text GOTO/%lf,%lf,%lf,%lf,%lf,%lf%n x y z i j k end] == 7} {
         set axis [Unit $i $j $k]
-        if {$axis eq ""} {return {}}
-    } elseif {[scan $rest %lf,%lf,%lf%n x y z end] == 4} {
+        # (llength: eq would make the list's string for nothing)
+        if {![llength $axis]} {return {}}
+    } elseif {[scan $text GOTO/%lf,%lf,%lf%n x y z end] == 4} {
         set axis {}
     } else {
         return {}
     }
     # (finite: between the infinities; abs() is a command call in expr)
-    if {$end != [string length $rest]
+    if {$end != [string length $text]
             || !($x < Inf && $x > -Inf && $y < Inf && $y > -Inf && $z < Inf && $z > -Inf)} {
         return {}
     }

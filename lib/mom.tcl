@@ -43,18 +43,19 @@ namespace eval ::fivax::mom {
         {-globals any {} DICT "globals set in the post interpreter before the post is sourced"}
         {-autopath any {} LIST "package path of the post interpreter"}
     }
-    # What the runtime does in the post interpreter, in one crossing per
-    # record (see Runtime Flush): a flat list of operations {op name
-    # value}: v sets the global name, a sets the global array name from
-    # the pairs value, p sets a position (see Runtime SetPosition: name
-    # is the previous {x y z i j k}, value the current one), e fires
-    # MOM_name (MOM_abort_event leaves the handler quietly). The event
-    # being fired is the variable event of the post interpreter's
-    # namespace ::fivax::mom::runtime (for MOM_ask_event_type).
+    # The body of the proc ::fivax::mom::runtime::Dispatch {ops} the
+    # runtime defines in the post interpreter: what it does there, in one
+    # crossing per record (see Runtime Flush). ops is a flat list of
+    # operations {op name value}: v sets the global name, a sets the
+    # global array name from the pairs value, p sets a position (see
+    # Runtime SetPosition: name is the previous {x y z i j k}, value the
+    # current one), e fires MOM_name (MOM_abort_event leaves the handler
+    # quietly). The event being fired is the variable event of that
+    # namespace (for MOM_ask_event_type).
     # (The position arrays are linked by global, so that lassign sets
     # local names; an error puts the event back by an on-error handler,
     # which unlike finally costs nothing when there is none.)
-    variable dispatch {{ops} {
+    variable dispatch {
         variable event
         set saved $event
         try {
@@ -83,7 +84,7 @@ namespace eval ::fivax::mom {
             return -options $opts $msg
         }
         set event $saved
-    } ::fivax::mom::runtime}
+    }
     # MOM_* commands with behaviour (implemented by Cmd<name> below).
     variable commands {
         MOM_output_literal MOM_output_text MOM_do_template MOM_force
@@ -127,7 +128,7 @@ proc ::fivax::mom::create {args} {
 proc ::fivax::mom::FirstUnit {path} {
     set reader [::fivax::clsf::open $path]
     try {
-        while {[set rec [$reader next]] ne ""} {
+        while {[dict size [set rec [$reader next]]]} {
             switch -- [dict get $rec kind] {
                 UNITS {return [expr {[dict get $rec value] eq "INCH" ? "IN" : "MM"}]}
                 FEDRAT {
@@ -276,6 +277,7 @@ oo::class create ::fivax::mom::Runtime {
         set S(interp) [interp create]
         set child $S(interp)
         $child eval {namespace eval ::fivax::mom::runtime {variable event ""}}
+        $child eval [list proc ::fivax::mom::runtime::Dispatch {ops} $::fivax::mom::dispatch]
         if {[llength $S(autopath)]} {
             $child eval [list set ::auto_path $S(autopath)]
         }
@@ -329,7 +331,8 @@ oo::class create ::fivax::mom::Runtime {
         }
         try {
             my Start $path
-            while {[set rec [$reader next]] ne ""} {
+            # (dict size: ne "" would make each record's string)
+            while {[dict size [set rec [$reader next]]]} {
                 incr S(records)
                 my Record $rec
             }
@@ -398,12 +401,12 @@ oo::class create ::fivax::mom::Runtime {
 
     # Flush --
     #	Does the waiting operations (globals, arrays, handlers) in the post
-    #	interpreter, in order, in one call (the dispatch lambda).
+    #	interpreter, in order, in one call (see dispatch).
     method Flush {} {
         if {![llength $S(ops)]} return
         set ops $S(ops)
         set S(ops) {}
-        $S(interp) eval [list apply $::fivax::mom::dispatch $ops]
+        $S(interp) eval [list ::fivax::mom::runtime::Dispatch $ops]
     }
 
     # Child -- Returns the result of script in the post interpreter, the waiting operations done first.
@@ -419,10 +422,9 @@ oo::class create ::fivax::mom::Runtime {
 
     # Record -- Maps one CLSF record to globals and events.
     method Record {rec} {
-        namespace upvar ::fivax::mom headerKinds headerKinds
         set kind [dict get $rec kind]
         lappend S(ops) v mom_cl_line [dict get $rec line]
-        if {$S(headerPending) && $kind ni $headerKinds} {my FlushHeader}
+        if {$S(headerPending) && $kind ni $::fivax::mom::headerKinds} {my FlushHeader}
         if {$S(scale) != 1.0} {set rec [my Scale $rec]}
         if {[llength $S(nurbs)] && $kind ni {KNOT CNTRL}} {my Nurbs}
         switch -- $kind {
@@ -704,7 +706,8 @@ oo::class create ::fivax::mom::Runtime {
     #	and axis in one list). mom_pos mirrors mom_mcs_goto: the replay
     #	runtime does no kinematics.
     method SetPosition {point axis} {
-        set position [concat $point $axis]
+        # (list: concat makes the strings of the axis's numbers)
+        set position [list {*}$point {*}$axis]
         # (llength: eq would make the previous point's string for nothing)
         if {![llength $S(point)]} {set S(position) $position}
         lappend S(ops) p $S(position) $position
