@@ -62,11 +62,13 @@ oo::class create ::fivax::clsf::Reader {
     # (bytes after the chunk's last line end), bytes (bytes read so far),
     # eof, skip (1: dropping the rest of an over-long line), partStart and
     # partBytes (where the chunk starts in the input, and its length in
-    # bytes), count (records handed out), progress and tick (the progress
-    # command when the reader was made, and the count it runs at next).
+    # bytes), count (records handed out up to the last progress call),
+    # progress (the progress command when the reader was made), every and
+    # tick (the records between two progress calls, and how many are left
+    # to the next one: never reached without a command).
     # (The hot path of next uses few of them: each costs on every call.)
     variable chan name line own saved lines idx carry bytes eof skip partStart partBytes \
-        count progress tick
+        count progress every tick
 
     constructor {aChan aName aOwn} {
         set chan $aChan
@@ -85,7 +87,8 @@ oo::class create ::fivax::clsf::Reader {
         set partBytes 0
         set count 0
         set progress $::fivax::clsf::progress
-        set tick [expr {$progress eq "" ? Inf : $::fivax::clsf::progressEvery}]
+        set every [expr {$progress eq "" ? 1 << 62 : $::fivax::clsf::progressEvery}]
+        set tick $every
     }
 
     destructor {
@@ -107,22 +110,30 @@ oo::class create ::fivax::clsf::Reader {
 
     # Returns the next record dict, or {} at end of file. Joins "$"
     # continuations, drops "$$" comments, blank lines and PAINT. After an
-    # error the reader stays usable: the bad record is consumed.
+    # error the reader stays usable: the bad record is consumed. A line
+    # that is a plain GOTO record (PlainGoto) is read at once; any other
+    # goes through parse.
     method next {} {
         set n $line
         while {1} {
             set text [lindex $lines $idx]
             incr idx
+            set first [incr n]
+            if {[string match GOTO/* $text]} {
+                set rec [::fivax::clsf::PlainGoto $text $name $first]
+                if {[dict size $rec]} break
+            }
             if {[string index $text 0] eq "\0"} {
                 # the end of the chunk, or a refused line
                 if {$text eq "\0"} {
+                    incr n -1
                     if {[my Fill]} continue
-                    break
+                    set line $n
+                    return {}
                 }
-                set line [incr n]
+                set line $n
                 my Refuse $text $n
             }
-            set first [incr n]
             if {[string first "\$" $text] >= 0} {
                 set text [my Join $text $first n]
             }
@@ -130,16 +141,20 @@ oo::class create ::fivax::clsf::Reader {
             if {$text eq ""} {continue}
             set line $n
             set rec [::fivax::clsf::parse $text $name $first]
-            if {[dict size $rec]} {
-                if {[incr count] >= $tick} {
-                    incr tick $::fivax::clsf::progressEvery
-                    {*}$progress $count {*}[my position]
-                }
-                return $rec
-            }
+            if {[dict size $rec]} break
         }
         set line $n
-        return {}
+        if {[incr tick -1] <= 0} {my Progress}
+        return $rec
+    }
+
+    # Calls the progress command (every records handed out since the
+    # last call) and sets the count to the next call.
+    method Progress {} {
+        incr count $every
+        set every $::fivax::clsf::progressEvery
+        set tick $every
+        {*}$progress $count {*}[my position]
     }
 
     # Returns text (the first physical line of a record, at line first)
@@ -316,6 +331,8 @@ proc ::fivax::clsf::progress {cmd} {
 #	refusal: NUL, "TEXT", a space and the reason (a decoded line never
 #	holds NUL).
 proc ::fivax::clsf::Decode {part} {
+    # printable ASCII, tabs and \n only (the common case): one scan
+    if {![regexp {[^\t\n\x20-\x7e]} $part]} {return [split $part \n]}
     if {[string first \r $part] >= 0} {set part [string map {\r\n \n \r \n} $part]}
     set lines [split $part \n]
     if {[string is ascii $part] && ![regexp {[\x00-\x08\x0b-\x1f\x7f]} $part]} {
@@ -352,10 +369,6 @@ proc ::fivax::clsf::Control {text} {
 #	Returns the record dict for one logical record text (joined, without
 #	comments) found at file:line, or {} for PAINT. Never evaluates text.
 proc ::fivax::clsf::parse {text file line} {
-    if {[string range $text 0 4] eq "GOTO/"} {
-        set rec [PlainGoto [string range $text 5 end] $file $line]
-        if {[dict size $rec]} {return $rec}
-    }
     set slash [string first / $text]
     if {$slash >= 0} {
         set major [string toupper [string trim [string range $text 0 [expr {$slash - 1}]]]]
@@ -424,23 +437,28 @@ proc ::fivax::clsf::parse {text file line} {
 }
 
 # ::fivax::clsf::PlainGoto --
-#	The fast path of a record "GOTO/rest" as NX writes it: returns its
-#	record when rest is exactly 3 or 6 finite decimal numbers and the
-#	axis is a unit vector, else {} (parse then reads it token by token,
+#	The fast path of a physical line "GOTO/rest" as NX writes it (the
+#	reader's next tries it first): returns its record when rest is exactly
+#	3 or 6 finite decimal numbers and the axis is a unit vector, else {}
+#	(the line then goes through parse, which reads it token by token,
 #	with the errors). The numbers scan reads are those of num::parse:
 #	hex, binary, octal and nan stop it, Inf fails the finite test, the
 #	white space it skips before a number is white space string trim
-#	removes, and %n proves nothing is left over.
-proc ::fivax::clsf::PlainGoto {rest file line} {
-    if {[scan $rest %lf,%lf,%lf,%lf,%lf,%lf%n x y z i j k end] == 7} {
+#	removes, and %n proves nothing is left over (no "$", no comment, no
+#	white space at the end).
+proc ::fivax::clsf::PlainGoto {text file line} {
+    if {[scan $text GOTO/%lf,%lf,%lf,%lf,%lf,%lf%n x y z i j k end] == 7} {
         set axis [Unit $i $j $k]
-        if {$axis eq ""} {return {}}
-    } elseif {[scan $rest %lf,%lf,%lf%n x y z end] == 4} {
+        # (llength: eq would make the list's string for nothing)
+        if {![llength $axis]} {return {}}
+    } elseif {[scan $text GOTO/%lf,%lf,%lf%n x y z end] == 4} {
         set axis {}
     } else {
         return {}
     }
-    if {$end != [string length $rest] || !(abs($x) < Inf && abs($y) < Inf && abs($z) < Inf)} {
+    # (finite: between the infinities; abs() is a command call in expr)
+    if {$end != [string length $text]
+            || !($x < Inf && $x > -Inf && $y < Inf && $y > -Inf && $z < Inf && $z > -Inf)} {
         return {}
     }
     dict create kind GOTO file $file line $line point [list $x $y $z] axis $axis
@@ -504,7 +522,9 @@ proc ::fivax::clsf::Axis {i j k file line major label} {
 #	more than 1e-3 (or is not finite).
 proc ::fivax::clsf::Unit {u v w} {
     set len [expr {sqrt($u * $u + $v * $v + $w * $w)}]
-    if {!(abs($len - 1.0) <= 1e-3)} {return ""}
+    # (|len - 1| <= 1e-3 as two comparisons: abs() is a command call in expr)
+    set off [expr {$len - 1.0}]
+    if {!($off <= 1e-3 && $off >= -1e-3)} {return ""}
     if {$len != 1.0} {
         return [list [expr {$u / $len}] [expr {$v / $len}] [expr {$w / $len}]]
     }

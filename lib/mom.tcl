@@ -43,15 +43,19 @@ namespace eval ::fivax::mom {
         {-globals any {} DICT "globals set in the post interpreter before the post is sourced"}
         {-autopath any {} LIST "package path of the post interpreter"}
     }
-    # What the runtime does in the post interpreter, in one crossing per
-    # record (see Runtime Flush): a flat list of operations {op name
-    # value}: v sets the global name, a sets the global array name from
-    # the pairs value, p sets a position (see Runtime SetPosition: name
-    # is the previous {x y z i j k}, value the current one), e fires
-    # MOM_name (MOM_abort_event leaves the handler quietly). The event
-    # being fired is the variable event of the post interpreter's
-    # namespace ::fivax::mom::runtime (for MOM_ask_event_type).
-    variable dispatch {{ops} {
+    # The body of the proc ::fivax::mom::runtime::Dispatch {ops} the
+    # runtime defines in the post interpreter: what it does there, in one
+    # crossing per record (see Runtime Flush). ops is a flat list of
+    # operations {op name value}: v sets the global name, a sets the
+    # global array name from the pairs value, p sets a position (see
+    # Runtime SetPosition: name is the previous {x y z i j k}, value the
+    # current one), e fires MOM_name (MOM_abort_event leaves the handler
+    # quietly). The event being fired is the variable event of that
+    # namespace (for MOM_ask_event_type).
+    # (The position arrays are linked by global, so that lassign sets
+    # local names; an error puts the event back by an on-error handler,
+    # which unlike finally costs nothing when there is none.)
+    variable dispatch {
         variable event
         set saved $event
         try {
@@ -60,12 +64,14 @@ namespace eval ::fivax::mom {
                     v {set ::$name $value}
                     a {array set ::$name $value}
                     p {
-                        lassign $name ::mom_prev_mcs_goto(0) ::mom_prev_mcs_goto(1) \
-                            ::mom_prev_mcs_goto(2) ::mom_prev_tool_axis(0) \
-                            ::mom_prev_tool_axis(1) ::mom_prev_tool_axis(2)
-                        lassign $value ::mom_mcs_goto(0) ::mom_mcs_goto(1) ::mom_mcs_goto(2) \
-                            ::mom_tool_axis(0) ::mom_tool_axis(1) ::mom_tool_axis(2)
-                        lassign $value ::mom_pos(0) ::mom_pos(1) ::mom_pos(2)
+                        global mom_prev_mcs_goto mom_prev_tool_axis mom_mcs_goto mom_tool_axis \
+                            mom_pos
+                        lassign $name mom_prev_mcs_goto(0) mom_prev_mcs_goto(1) \
+                            mom_prev_mcs_goto(2) mom_prev_tool_axis(0) \
+                            mom_prev_tool_axis(1) mom_prev_tool_axis(2)
+                        lassign $value mom_mcs_goto(0) mom_mcs_goto(1) mom_mcs_goto(2) \
+                            mom_tool_axis(0) mom_tool_axis(1) mom_tool_axis(2)
+                        lassign $value mom_pos(0) mom_pos(1) mom_pos(2)
                     }
                     e {
                         set event $name
@@ -73,10 +79,12 @@ namespace eval ::fivax::mom {
                     }
                 }
             }
-        } finally {
+        } on error {msg opts} {
             set event $saved
+            return -options $opts $msg
         }
-    } ::fivax::mom::runtime}
+        set event $saved
+    }
     # MOM_* commands with behaviour (implemented by Cmd<name> below).
     variable commands {
         MOM_output_literal MOM_output_text MOM_do_template MOM_force
@@ -120,7 +128,7 @@ proc ::fivax::mom::create {args} {
 proc ::fivax::mom::FirstUnit {path} {
     set reader [::fivax::clsf::open $path]
     try {
-        while {[set rec [$reader next]] ne ""} {
+        while {[dict size [set rec [$reader next]]]} {
             switch -- [dict get $rec kind] {
                 UNITS {return [expr {[dict get $rec value] eq "INCH" ? "IN" : "MM"}]}
                 FEDRAT {
@@ -269,6 +277,7 @@ oo::class create ::fivax::mom::Runtime {
         set S(interp) [interp create]
         set child $S(interp)
         $child eval {namespace eval ::fivax::mom::runtime {variable event ""}}
+        $child eval [list proc ::fivax::mom::runtime::Dispatch {ops} $::fivax::mom::dispatch]
         if {[llength $S(autopath)]} {
             $child eval [list set ::auto_path $S(autopath)]
         }
@@ -322,7 +331,8 @@ oo::class create ::fivax::mom::Runtime {
         }
         try {
             my Start $path
-            while {[set rec [$reader next]] ne ""} {
+            # (dict size: ne "" would make each record's string)
+            while {[dict size [set rec [$reader next]]]} {
                 incr S(records)
                 my Record $rec
             }
@@ -379,7 +389,8 @@ oo::class create ::fivax::mom::Runtime {
     #	handlers of one record run in one crossing). Returns 1 if the post
     #	has the handler.
     method Fire {event {now 1}} {
-        set has [my Has MOM_$event]
+        # (Has answers once per name: its answer is read here without a call)
+        set has [expr {[info exists S(has:MOM_$event)] ? $S(has:MOM_$event) : [my Has MOM_$event]}]
         if {$has} {
             incr S(events)
             lappend S(ops) e $event {}
@@ -390,12 +401,12 @@ oo::class create ::fivax::mom::Runtime {
 
     # Flush --
     #	Does the waiting operations (globals, arrays, handlers) in the post
-    #	interpreter, in order, in one call (the dispatch lambda).
+    #	interpreter, in order, in one call (see dispatch).
     method Flush {} {
         if {![llength $S(ops)]} return
         set ops $S(ops)
         set S(ops) {}
-        $S(interp) eval [list apply $::fivax::mom::dispatch $ops]
+        $S(interp) eval [list ::fivax::mom::runtime::Dispatch $ops]
     }
 
     # Child -- Returns the result of script in the post interpreter, the waiting operations done first.
@@ -411,10 +422,9 @@ oo::class create ::fivax::mom::Runtime {
 
     # Record -- Maps one CLSF record to globals and events.
     method Record {rec} {
-        namespace upvar ::fivax::mom headerKinds headerKinds
         set kind [dict get $rec kind]
         lappend S(ops) v mom_cl_line [dict get $rec line]
-        if {$S(headerPending) && $kind ni $headerKinds} {my FlushHeader}
+        if {$S(headerPending) && $kind ni $::fivax::mom::headerKinds} {my FlushHeader}
         if {$S(scale) != 1.0} {set rec [my Scale $rec]}
         if {[llength $S(nurbs)] && $kind ni {KNOT CNTRL}} {my Nurbs}
         switch -- $kind {
@@ -696,8 +706,10 @@ oo::class create ::fivax::mom::Runtime {
     #	and axis in one list). mom_pos mirrors mom_mcs_goto: the replay
     #	runtime does no kinematics.
     method SetPosition {point axis} {
-        set position [concat $point $axis]
-        if {$S(point) eq ""} {set S(position) $position}
+        # (list: concat makes the strings of the axis's numbers)
+        set position [list {*}$point {*}$axis]
+        # (llength: eq would make the previous point's string for nothing)
+        if {![llength $S(point)]} {set S(position) $position}
         lappend S(ops) p $S(position) $position
         set S(point) $point
         set S(position) $position
@@ -1031,24 +1043,19 @@ oo::class create ::fivax::mom::Runtime {
         }
     }
 
-    # Write -- Writes one NC line to the output channel.
-    method Write {text} {
-        if {$text eq ""} return
-        incr S(blocks)
-        if {$S(channel) ne ""} {puts $S(channel) $text}
-    }
-
-    # MOM_output_text: one literal line, never numbered.
+    # MOM_output_text: one literal line, never numbered, to the output
+    # channel (an empty one is not written); every line goes out here.
     method Cmd_output_text {text args} {
-        my Write $text
+        if {$text ne ""} {
+            incr S(blocks)
+            if {$S(channel) ne ""} {puts $S(channel) $text}
+        }
         return $text
     }
 
     # MOM_output_literal: one literal line, numbered when sequencing is on.
     method Cmd_output_literal {text args} {
-        set line [$S(nc) line $text]
-        my Write $line
-        return $line
+        my Cmd_output_text [$S(nc) line $text]
     }
 
     # MOM_do_template: formats a .def block template with the post's globals.
@@ -1080,7 +1087,7 @@ oo::class create ::fivax::mom::Runtime {
             lappend words $addr $value
         }
         set line [$S(nc) block $words]
-        if {$mode ne "CREATE"} {my Write $line}
+        if {$mode ne "CREATE"} {my Cmd_output_text $line}
         return $line
     }
 
