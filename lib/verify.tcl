@@ -178,6 +178,11 @@ oo::class create ::fivax::verify::Checker {
         foreach name $names key {q1 q2} {
             set S(axis:$name) [list $key {*}[dict get $bounds $name]]
         }
+        # Xlo Xhi .. Zhi: the bounds of the machine's travel (as machine
+        # outside takes them)
+        foreach axis {X Y Z} {
+            lassign [dict get $bounds $axis] S(${axis}lo) S(${axis}hi)
+        }
         array set S {X {} Y {} Z {} q1 {} q2 {} motion {} mode direct F {} prev {}
             cycle 0 return 98 initial {} bottom {} R {} tcp 0 frame {} plane 17 cc {}
             checked 0 segments 0 maxPos 0.0 maxAng 0.0 maxMidPos 0.0 maxMidAng 0.0
@@ -691,14 +696,13 @@ oo::class create ::fivax::verify::Checker {
     # summary keeps).
     method block {line move} {
         lassign [my Read $line 0] joints pose space limit arc hole
-        if {$limit ne "" || $joints ne ""} {
-            # the machine X Y Z (when known) and the rotaries read outside
-            # their limits
-            set values {}
-            if {$joints ne ""} {
-                lassign $joints x y z
-                set values [list X $x Y $y Z $z]
-            }
+        # the machine X Y Z (when known) and the rotaries read outside
+        # their limits (the usual block, within the travel's bounds and
+        # the rotaries' limits, needs no machine checkLimits)
+        lassign $joints x y z
+        if {$limit ne "" || ($joints ne "" && !($x >= $S(Xlo) && $x <= $S(Xhi)
+                && $y >= $S(Ylo) && $y <= $S(Yhi) && $z >= $S(Zlo) && $z <= $S(Zhi)))} {
+            set values [expr {$joints eq "" ? {} : [list X $x Y $y Z $z]}]
             foreach axis $limit {
                 dict set values $axis $S([lindex $S(axis:$axis) 0])
             }
