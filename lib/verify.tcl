@@ -144,8 +144,9 @@ proc ::fivax::verify::LineRe {re} {
 oo::class create ::fivax::verify::Checker {
     # S: machine, tableOffset, the dialect's comment skip word syntax
     # (its table entry), lineRe, plainText, pi, the tables CycleG KnownG
-    # KnownLetters, rolling, rotaries (the chain's names), axis:NAME, model, the modal state X Y
-    # Z q1 q2 motion (0/1) mode (direct/inverse) F, prev (the last checked
+    # KnownLetters, rolling, rotaries (the chain's names), axis:NAME,
+    # Xlo Xhi Ylo Yhi Zlo Zhi (the travel's bounds), model, the modal
+    # state X Y Z q1 q2 motion (0/1) mode (direct/inverse) F, prev (the last checked
     # block) and the statistics (see summary).
     variable S
 
