@@ -126,10 +126,16 @@ proc ::fivax::kin::model {machine toolLength {tableOffset ""}} {
     set m1n [expr {$m1x * $nx + $m1y * $ny}]
     set zpu2 [expr {$zpx * $x2 + $zpy * $y2 + $zpz * $z2}]
     set zpn [expr {$zpx * $nx + $zpy * $ny + $zpz * $nz}]
+    # (with w k1 and the namespace's constants, negated ones too:
+    # orientations reads them all from the list)
+    variable singularTol
+    variable edgeTol
+    variable pi
     dict set m ori [list $x1 $y1 $z1 $x2 $y2 $z2 $nx $ny $nz $w $nn [expr {sqrt($nn)}] \
                         $k1 $dP $dM $m1u2 $m1n $zpu2 $zpn \
                         [expr {double([dict get $m s1])}] [expr {double([dict get $m s2])}] \
-                        [dict get $m z1] [dict get $m z2]]
+                        [dict get $m z1] [dict get $m z2] [expr {$w * $k1}] \
+                        $singularTol $edgeTol [expr {-$edgeTol}] $pi [expr {-$pi}]]
 
     # Constants of interpolationBound: rh = |u1 x p1|, the distance of the
     # tip from a head axis 1 (the point it turns is the zero-pose tip,
@@ -232,9 +238,6 @@ proc ::fivax::kin::toolInMachine {model q} {
 #	Then th1 = angle from Z to c about u1 and th2 = angle from c to t about
 #	u2 (subproblem 1, written with precomputed dot products), q_i = s_i th_i.
 proc ::fivax::kin::orientations {model t} {
-    variable singularTol
-    variable edgeTol
-    variable pi
     lassign $t tx ty tz
     set tn [expr {sqrt($tx * $tx + $ty * $ty + $tz * $tz)}]
     if {$tn == 0.0} {::fivax::Fail KIN ZERO "tool axis is a zero vector"}
@@ -242,7 +245,7 @@ proc ::fivax::kin::orientations {model t} {
         set tx [expr {$tx / $tn}]; set ty [expr {$ty / $tn}]; set tz [expr {$tz / $tn}]
     }
     lassign [dict get $model ori] x1 y1 z1 x2 y2 z2 nx ny nz w nn sqnn \
-        k1 dP dM m1u2 m1n zpu2 zpn s1 s2 o1 o2
+        k1 dP dM m1u2 m1n zpu2 zpn s1 s2 o1 o2 wk1 singularTol edgeTol medge pi mpi
     set h [expr {$x2 * $tx + $y2 * $ty + $z2 * $tz}]
     # e = t x u2, r = |e| = |t_perp|
     set ex [expr {$ty * $z2 - $tz * $y2}]
@@ -259,12 +262,14 @@ proc ::fivax::kin::orientations {model t} {
     # (abs() is a command call in expr: the ternary gives the same result)
     set ad [expr {$d > 0.0 ? $d : 0.0 - $d}]
     set D [expr {$rs - $ad}]
-    if {$D < -$edgeTol} {return {unreachable {}}}
-    set b [expr {($h - $w * $k1) / $nn}]
+    if {$D < $medge} {return {unreachable {}}}
+    set b [expr {($h - $wk1) / $nn}]
+    set bm [expr {$b * $m1u2}]
+    set bz [expr {$b * $zpu2}]
     if {$r < $singularTol} {
-        set q [expr {$s1 * atan2($b * $m1u2, $b * $zpu2) + $o1}]
-        if {$q <= -$pi || $q > $pi} {set q [Wrap $q]}
-        set q2 [expr {$o2 <= -$pi || $o2 > $pi ? [Wrap $o2] : $o2}]
+        set q [expr {$s1 * atan2($bm, $bz) + $o1}]
+        if {$q <= $mpi || $q > $pi} {set q [Wrap $q]}
+        set q2 [expr {$o2 <= $mpi || $o2 > $pi ? [Wrap $o2] : $o2}]
         return [list singular [list [list $q $q2]]]
     }
     set a [expr {$d / $nn}]
@@ -278,12 +283,16 @@ proc ::fivax::kin::orientations {model t} {
     set ne [expr {$nx * $ex + $ny * $ey + $nz * $ez}]
     set ut [expr {$x1 * ($tx - $h * $x2) + $y1 * ($ty - $h * $y2) + $z1 * ($tz - $h * $z2)}]
     set nt [expr {$nx * $tx + $ny * $ty + $nz * $tz}]
+    set au [expr {$a * $ue}]
+    set at [expr {$a * $ut}]
+    # g and -g: two solutions when g > 0 (a list from expr would get its
+    # string made by expr's number test)
+    set gs [list $g]
+    if {$g > 0.0} {lappend gs [expr {-$g}]}
     set sols {}
-    set mpi [expr {-$pi}]
-    foreach sg [expr {$g > 0.0 ? {1.0 -1.0} : {1.0}}] {
-        set gg [expr {$sg * $g}]
-        set q1 [expr {$s1 * atan2($b * $m1u2 + $gg * $m1n, $b * $zpu2 + $gg * $zpn) + $o1}]
-        set q2 [expr {$s2 * atan2($a * $ue + $gg * $ne, $a * $ut + $gg * $nt) + $o2}]
+    foreach gg $gs {
+        set q1 [expr {$s1 * atan2($bm + $gg * $m1n, $bz + $gg * $zpn) + $o1}]
+        set q2 [expr {$s2 * atan2($au + $gg * $ne, $at + $gg * $nt) + $o2}]
         if {$q1 <= $mpi || $q1 > $pi} {set q1 [Wrap $q1]}
         if {$q2 <= $mpi || $q2 > $pi} {set q2 [Wrap $q2]}
         lappend sols [list $q1 $q2]
