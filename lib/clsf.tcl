@@ -66,11 +66,13 @@ oo::class create ::fivax::clsf::Reader {
     # progress (the progress command when the reader was made), every and
     # tick (the records between two progress calls, and how many are left
     # to the next one: never reached without a command).
-    # (The hot path of next uses few of them: each costs on every call.)
-    variable chan name line own saved lines idx carry bytes eof skip partStart partBytes \
-        count progress every tick
+    # (Only those of next are the class's variables: each costs on every
+    # call of every method; the other methods link the rest with "my
+    # variable".)
+    variable name line lines idx tick
 
     constructor {aChan aName aOwn} {
+        my variable chan own saved carry bytes eof skip partStart partBytes count progress every
         set chan $aChan
         set name $aName
         set line 0
@@ -92,6 +94,7 @@ oo::class create ::fivax::clsf::Reader {
     }
 
     destructor {
+        my variable chan own saved
         if {$chan ni [chan names]} return
         if {$own} {
             ::close $chan
@@ -103,6 +106,7 @@ oo::class create ::fivax::clsf::Reader {
     # Returns {line bytes}: the last physical line handed out and about
     # how many bytes of the input it ends at (for progress reports).
     method position {} {
+        my variable bytes carry partStart partBytes
         set n [expr {[llength $lines] - 1}]
         if {$n <= 0} {return [list $line [expr {$bytes - [string length $carry]}]]}
         list $line [expr {$partStart + $partBytes * min($idx, $n) / $n}]
@@ -151,6 +155,7 @@ oo::class create ::fivax::clsf::Reader {
     # Calls the progress command (every records handed out since the
     # last call) and sets the count to the next call.
     method Progress {} {
+        my variable count every progress
         incr count $every
         set every $::fivax::clsf::progressEvery
         set tick $every
@@ -220,6 +225,7 @@ oo::class create ::fivax::clsf::Reader {
     # stays bounded: a line over maxLine characters is replaced by a
     # refusal, and the rest of one that has no end yet is skipped.
     method Fill {} {
+        my variable eof carry partStart bytes partBytes chan skip
         namespace upvar ::fivax::clsf chunk chunk maxLine maxLine
         while {1} {
             if {$eof} {

@@ -40,6 +40,9 @@ namespace eval ::fivax::kin {
     # g = 0; the two near-coincident roots would differ by ~sqrt(D) in the
     # angles but only by ~D in the tool axis, so merging them costs < 1e-11).
     variable edgeTol 1e-12
+    # interpolationBound's last call: its bound list, end 1 (tip and axis
+    # lists, X Y Z) and the terms of that end (see there).
+    variable lastEnd {}
 }
 
 # ::fivax::kin::model --
@@ -126,10 +129,16 @@ proc ::fivax::kin::model {machine toolLength {tableOffset ""}} {
     set m1n [expr {$m1x * $nx + $m1y * $ny}]
     set zpu2 [expr {$zpx * $x2 + $zpy * $y2 + $zpz * $z2}]
     set zpn [expr {$zpx * $nx + $zpy * $ny + $zpz * $nz}]
+    # (with w k1 and the namespace's constants, negated ones too:
+    # orientations reads them all from the list)
+    variable singularTol
+    variable edgeTol
+    variable pi
     dict set m ori [list $x1 $y1 $z1 $x2 $y2 $z2 $nx $ny $nz $w $nn [expr {sqrt($nn)}] \
                         $k1 $dP $dM $m1u2 $m1n $zpu2 $zpn \
                         [expr {double([dict get $m s1])}] [expr {double([dict get $m s2])}] \
-                        [dict get $m z1] [dict get $m z2]]
+                        [dict get $m z1] [dict get $m z2] [expr {$w * $k1}] \
+                        $singularTol $edgeTol [expr {-$edgeTol}] $pi [expr {-$pi}]]
 
     # Constants of interpolationBound: rh = |u1 x p1|, the distance of the
     # tip from a head axis 1 (the point it turns is the zero-pose tip,
@@ -232,9 +241,6 @@ proc ::fivax::kin::toolInMachine {model q} {
 #	Then th1 = angle from Z to c about u1 and th2 = angle from c to t about
 #	u2 (subproblem 1, written with precomputed dot products), q_i = s_i th_i.
 proc ::fivax::kin::orientations {model t} {
-    variable singularTol
-    variable edgeTol
-    variable pi
     lassign $t tx ty tz
     set tn [expr {sqrt($tx * $tx + $ty * $ty + $tz * $tz)}]
     if {$tn == 0.0} {::fivax::Fail KIN ZERO "tool axis is a zero vector"}
@@ -242,7 +248,7 @@ proc ::fivax::kin::orientations {model t} {
         set tx [expr {$tx / $tn}]; set ty [expr {$ty / $tn}]; set tz [expr {$tz / $tn}]
     }
     lassign [dict get $model ori] x1 y1 z1 x2 y2 z2 nx ny nz w nn sqnn \
-        k1 dP dM m1u2 m1n zpu2 zpn s1 s2 o1 o2
+        k1 dP dM m1u2 m1n zpu2 zpn s1 s2 o1 o2 wk1 singularTol edgeTol medge pi mpi
     set h [expr {$x2 * $tx + $y2 * $ty + $z2 * $tz}]
     # e = t x u2, r = |e| = |t_perp|
     set ex [expr {$ty * $z2 - $tz * $y2}]
@@ -259,12 +265,14 @@ proc ::fivax::kin::orientations {model t} {
     # (abs() is a command call in expr: the ternary gives the same result)
     set ad [expr {$d > 0.0 ? $d : 0.0 - $d}]
     set D [expr {$rs - $ad}]
-    if {$D < -$edgeTol} {return {unreachable {}}}
-    set b [expr {($h - $w * $k1) / $nn}]
+    if {$D < $medge} {return {unreachable {}}}
+    set b [expr {($h - $wk1) / $nn}]
+    set bm [expr {$b * $m1u2}]
+    set bz [expr {$b * $zpu2}]
     if {$r < $singularTol} {
-        set q [expr {$s1 * atan2($b * $m1u2, $b * $zpu2) + $o1}]
-        if {$q <= -$pi || $q > $pi} {set q [Wrap $q]}
-        set q2 [expr {$o2 <= -$pi || $o2 > $pi ? [Wrap $o2] : $o2}]
+        set q [expr {$s1 * atan2($bm, $bz) + $o1}]
+        if {$q <= $mpi || $q > $pi} {set q [Wrap $q]}
+        set q2 [expr {$o2 <= $mpi || $o2 > $pi ? [Wrap $o2] : $o2}]
         return [list singular [list [list $q $q2]]]
     }
     set a [expr {$d / $nn}]
@@ -278,12 +286,16 @@ proc ::fivax::kin::orientations {model t} {
     set ne [expr {$nx * $ex + $ny * $ey + $nz * $ez}]
     set ut [expr {$x1 * ($tx - $h * $x2) + $y1 * ($ty - $h * $y2) + $z1 * ($tz - $h * $z2)}]
     set nt [expr {$nx * $tx + $ny * $ty + $nz * $tz}]
+    set au [expr {$a * $ue}]
+    set at [expr {$a * $ut}]
+    # g and -g: two solutions when g > 0 (a list from expr would get its
+    # string made by expr's number test)
+    set gs [list $g]
+    if {$g > 0.0} {lappend gs [expr {-$g}]}
     set sols {}
-    set mpi [expr {-$pi}]
-    foreach sg [expr {$g > 0.0 ? {1.0 -1.0} : {1.0}}] {
-        set gg [expr {$sg * $g}]
-        set q1 [expr {$s1 * atan2($b * $m1u2 + $gg * $m1n, $b * $zpu2 + $gg * $zpn) + $o1}]
-        set q2 [expr {$s2 * atan2($a * $ue + $gg * $ne, $a * $ut + $gg * $nt) + $o2}]
+    foreach gg $gs {
+        set q1 [expr {$s1 * atan2($bm + $gg * $m1n, $bz + $gg * $zpn) + $o1}]
+        set q2 [expr {$s2 * atan2($au + $gg * $ne, $at + $gg * $nt) + $o2}]
         if {$q1 <= $mpi || $q1 > $pi} {set q1 [Wrap $q1]}
         if {$q2 <= $mpi || $q2 > $pi} {set q2 [Wrap $q2]}
         lappend sols [list $q1 $q2]
@@ -468,27 +480,54 @@ proc ::fivax::kin::interpolationError {model j0 j1 P0 P1 t0 t1 {tol Inf} {atol I
 #	interpolationError measures against the arc) for the axis.
 #	ba is Inf when e reaches 1.
 proc ::fivax::kin::interpolationBound {model j0 j1 P0 P1 t0 t1 ep ea} {
+    variable lastEnd
     lassign $j0 X0 Y0 Z0 a0 b0
     lassign $j1 X1 Y1 Z1 a1 b1
     set bound [dict get $model bound]
+    # The terms of an end: s, the distance from axis 2 of the point it
+    # turns (relative to p2: tip - XYZ - p2 on a head-head machine, tip -
+    # p2 otherwise), n = |u2 x t|, and q, on a table-table machine the
+    # distance of XYZ from axis 1 (else 0). End 0's are the last call's
+    # end 1 ones when the move starts there, as the moves of a path do:
+    # the same bound, tip and axis lists (eq: the very objects, found equal
+    # at once; equal strings are equal numbers) and X Y Z (never NaN: expr
+    # makes none; signed zeros do not matter: the terms square what they
+    # sum). Otherwise they are those of end 1 of the move that stays at
+    # end 0, bounded first (its own end 0 taken as 0: only its end 1 is
+    # kept).
+    lassign $lastEnd cb cP ct cX cY cZ s0 n0 q0
+    if {!($cb eq $bound && $cP eq $P0 && $ct eq $t0 && $cX == $X0 && $cY == $Y0 && $cZ == $Z0)} {
+        set lastEnd [list $bound $P0 $t0 $X0 $Y0 $Z0 0.0 0.0 0.0]
+        interpolationBound $model $j0 $j0 $P0 $P0 $t0 $t0 0.0 0.0
+        lassign $lastEnd - - - - - - s0 n0 q0
+    }
     lassign $bound kc ux2 uy2 uz2 px2 py2 pz2 rh k1 scale
     lassign $P0 x0 y0 z0
     lassign $P1 x1 y1 z1
+    lassign $t1 bx by bz
     # (abs() is a command call in expr: the ternaries give the same results
     # at a fraction of the cost; a zero may differ only in its sign)
     set w1 [expr {$a1 > $a0 ? $a1 - $a0 : $a0 - $a1}]
     set w2 [expr {$b1 > $b0 ? $b1 - $b0 : $b0 - $b1}]
-    # the points axis 2 turns, relative to p2, at the ends
+    # the terms of end 1
     if {$kc == 0} {
-        set ex [expr {$x0 - $X0 - $px2}]; set ey [expr {$y0 - $Y0 - $py2}]; set ez [expr {$z0 - $Z0 - $pz2}]
         set fx [expr {$x1 - $X1 - $px2}]; set fy [expr {$y1 - $Y1 - $py2}]; set fz [expr {$z1 - $Z1 - $pz2}]
     } else {
-        set ex [expr {$x0 - $px2}]; set ey [expr {$y0 - $py2}]; set ez [expr {$z0 - $pz2}]
         set fx [expr {$x1 - $px2}]; set fy [expr {$y1 - $py2}]; set fz [expr {$z1 - $pz2}]
     }
-    set r2 [expr {sqrt(($uy2 * $ez - $uz2 * $ey) ** 2 + ($uz2 * $ex - $ux2 * $ez) ** 2
-        + ($ux2 * $ey - $uy2 * $ex) ** 2) + sqrt(($uy2 * $fz - $uz2 * $fy) ** 2
-        + ($uz2 * $fx - $ux2 * $fz) ** 2 + ($ux2 * $fy - $uy2 * $fx) ** 2) + 2.0 * $ep}]
+    set s1 [expr {sqrt(($uy2 * $fz - $uz2 * $fy) ** 2 + ($uz2 * $fx - $ux2 * $fz) ** 2
+        + ($ux2 * $fy - $uy2 * $fx) ** 2)}]
+    set n1 [expr {sqrt(($uy2 * $bz - $uz2 * $by) ** 2 + ($uz2 * $bx - $ux2 * $bz) ** 2
+        + ($ux2 * $by - $uy2 * $bx) ** 2)}]
+    set q1 0.0
+    if {$kc == 2} {
+        lassign [lrange $bound end-5 end] ux1 uy1 uz1 px1 py1 pz1
+        set fx [expr {$X1 - $px1}]; set fy [expr {$Y1 - $py1}]; set fz [expr {$Z1 - $pz1}]
+        set q1 [expr {sqrt(($uy1 * $fz - $uz1 * $fy) ** 2 + ($uz1 * $fx - $ux1 * $fz) ** 2
+            + ($ux1 * $fy - $uy1 * $fx) ** 2)}]
+    }
+    set lastEnd [list $bound $P1 $t1 $X1 $Y1 $Z1 $s1 $n1 $q1]
+    set r2 [expr {$s0 + $s1 + 2.0 * $ep}]
     if {$kc == 0} {
         set r1 $rh
         set r2 [expr {0.5 * ($r2 + $w1 * $r1)}]
@@ -503,14 +542,7 @@ proc ::fivax::kin::interpolationBound {model j0 j1 P0 P1 t0 t1 ep ea} {
             set lin [expr {2.0 * $w2 * sqrt(($uy2 * $vz - $uz2 * $vy) ** 2
                 + ($uz2 * $vx - $ux2 * $vz) ** 2 + ($ux2 * $vy - $uy2 * $vx) ** 2)}]
         } else {
-            lassign [lrange $bound end-5 end] ux1 uy1 uz1 px1 py1 pz1
-            set ex [expr {$X0 - $px1}]; set ey [expr {$Y0 - $py1}]; set ez [expr {$Z0 - $pz1}]
-            set fx [expr {$X1 - $px1}]; set fy [expr {$Y1 - $py1}]; set fz [expr {$Z1 - $pz1}]
-            set r1 [expr {sqrt(($uy1 * $ez - $uz1 * $ey) ** 2 + ($uz1 * $ex - $ux1 * $ez) ** 2
-                + ($ux1 * $ey - $uy1 * $ex) ** 2)}]
-            set r [expr {sqrt(($uy1 * $fz - $uz1 * $fy) ** 2 + ($uz1 * $fx - $ux1 * $fz) ** 2
-                + ($ux1 * $fy - $uy1 * $fx) ** 2)}]
-            if {$r > $r1} {set r1 $r}
+            set r1 [expr {$q1 > $q0 ? $q1 : $q0}]
             set lin [expr {2.0 * $w2 * $v + 2.0 * $w1 * sqrt(($uy1 * $vz - $uz1 * $vy) ** 2
                 + ($uz1 * $vx - $ux1 * $vz) ** 2 + ($ux1 * $vy - $uy1 * $vx) ** 2)}]
         }
@@ -527,14 +559,10 @@ proc ::fivax::kin::interpolationBound {model j0 j1 P0 P1 t0 t1 ep ea} {
     set bp [expr {($ww * $r1 + $w2 * $w2 * $r2 + $lin) / 8.0 + $ep
         + 1e-9 * (1.0 + $size)}]
     # the axis: k2 from |u2 x t| at the ends
-    lassign $t0 ax ay az
-    lassign $t1 bx by bz
-    set k2 [expr {0.5 * (sqrt(($uy2 * $az - $uz2 * $ay) ** 2 + ($uz2 * $ax - $ux2 * $az) ** 2
-        + ($ux2 * $ay - $uy2 * $ax) ** 2) + sqrt(($uy2 * $bz - $uz2 * $by) ** 2
-        + ($uz2 * $bx - $ux2 * $bz) ** 2 + ($ux2 * $by - $uy2 * $bx) ** 2)
-        + 2.0 * $ea + $w1 * $k1)}]
+    set k2 [expr {0.5 * ($n0 + $n1 + 2.0 * $ea + $w1 * $k1)}]
     set e [expr {($ww * $k1 + $w2 * $w2 * $k2) / 8.0 + $ea}]
     if {$e >= 1.0} {return [list $bp Inf]}
+    lassign $t0 ax ay az
     set nl [expr {sqrt(($ay * $bz - $az * $by) ** 2 + ($az * $bx - $ax * $bz) ** 2
         + ($ax * $by - $ay * $bx) ** 2)}]
     set ba [expr {asin($e) + 1e-10 + ($nl > 5e-13 ? 1e-14 / $nl : 0.0)}]

@@ -46,7 +46,8 @@ namespace eval ::fivax::mom {
     # The body of the proc ::fivax::mom::runtime::Dispatch {ops} the
     # runtime defines in the post interpreter: what it does there, in one
     # crossing per record (see Runtime Flush). ops is a flat list of
-    # operations {op name value}: v sets the global name, a sets the
+    # operations {op name value}: v sets the variable name (a global,
+    # named with its :: by the runtime: no name to build here), a sets the
     # global array name from the pairs value, p sets a position (see
     # Runtime SetPosition: name is the previous {x y z i j k}, value the
     # current one), e fires MOM_name (MOM_abort_event leaves the handler
@@ -61,7 +62,7 @@ namespace eval ::fivax::mom {
         try {
             foreach {op name value} $ops {
                 switch -- $op {
-                    v {set ::$name $value}
+                    v {set $name $value}
                     a {array set ::$name $value}
                     p {
                         global mom_prev_mcs_goto mom_prev_tool_axis mom_mcs_goto mom_tool_axis \
@@ -370,7 +371,7 @@ oo::class create ::fivax::mom::Runtime {
     # Globals -- Sets the globals of a flat name/value list in the post interp (see Flush).
     method Globals {pairs} {
         foreach {name value} $pairs {
-            lappend S(ops) v $name $value
+            lappend S(ops) v ::$name $value
         }
     }
 
@@ -390,7 +391,8 @@ oo::class create ::fivax::mom::Runtime {
     #	has the handler.
     method Fire {event {now 1}} {
         # (Has answers once per name: its answer is read here without a call)
-        set has [expr {[info exists S(has:MOM_$event)] ? $S(has:MOM_$event) : [my Has MOM_$event]}]
+        set key has:MOM_$event
+        set has [expr {[info exists S($key)] ? $S($key) : [my Has MOM_$event]}]
         if {$has} {
             incr S(events)
             lappend S(ops) e $event {}
@@ -423,7 +425,7 @@ oo::class create ::fivax::mom::Runtime {
     # Record -- Maps one CLSF record to globals and events.
     method Record {rec} {
         set kind [dict get $rec kind]
-        lappend S(ops) v mom_cl_line [dict get $rec line]
+        lappend S(ops) v ::mom_cl_line [dict get $rec line]
         if {$S(headerPending) && $kind ni $::fivax::mom::headerKinds} {my FlushHeader}
         if {$S(scale) != 1.0} {set rec [my Scale $rec]}
         if {[llength $S(nurbs)] && $kind ni {KNOT CNTRL}} {my Nurbs}
@@ -679,8 +681,8 @@ oo::class create ::fivax::mom::Runtime {
         if {![info exists S(feed)]} {
             ::fivax::Fail MOM FEED "[::fivax::mom::Where $rec]: GOTO: feed move before any FEDRAT"
         }
-        lappend S(ops) v mom_motion_type CUT v mom_programmed_feed_rate $S(feed) \
-            v mom_feed_rate $S(feed)
+        lappend S(ops) v ::mom_motion_type CUT v ::mom_programmed_feed_rate $S(feed) \
+            v ::mom_feed_rate $S(feed)
     }
 
     # Move --
@@ -690,12 +692,12 @@ oo::class create ::fivax::mom::Runtime {
     #	to that name (as NX does, inferred from Post Builder's posts, which
     #	choose rapid or feed there from mom_programmed_feed_rate).
     method Move {event} {
-        lappend S(ops) v mom_motion_event $event
+        lappend S(ops) v ::mom_motion_event $event
         my Fire before_motion 0
         if {$S(firstMove)} {
             set S(firstMove) 0
             set event [expr {$S(toolChanged) ? "initial_move" : "first_move"}]
-            lappend S(ops) v mom_motion_event $event
+            lappend S(ops) v ::mom_motion_event $event
         }
         my Fire $event
     }

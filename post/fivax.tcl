@@ -27,34 +27,38 @@ foreach fivax_dir [list [file join $fivax_post_dir lib] [file join $fivax_post_d
 package require fivax 0.1
 unset fivax_dir
 
-# fivax_guard --
-#	Runs script in the caller (a handler) and turns any error into
+# fivax_abort --
+#	Ends posting on the error msg (return options opts) of a handler:
 #	MOM_abort with the CL position and operation, so that inside NX every
 #	fivax error ends posting with a message; the message goes to the log
 #	too.
-proc fivax_guard {script} {
-    try {
-        uplevel 1 $script
-    } on error {msg opts} {
-        global mom_path_name
-        # messages from the planner and the reader start with the position
-        set where [fivax_where]
-        if {![string match "event *" $where] && ![regexp {^(\S+:\d+|CL point \([^)]*\)): } $msg]} {
-            set msg "$where: $msg"
-        }
-        if {[info exists mom_path_name] && $mom_path_name ne ""} {
-            append msg " (operation $mom_path_name)"
-        }
-        global fivax
-        if {[lindex [dict get $opts -errorcode] 0] ne "FIVAX"} {
-            lappend fivax(log) "internal error: [dict get $opts -errorinfo]"
-        }
-        lappend fivax(log) "error: $msg"
-        fivax_close_log
-        MOM_abort $msg
-        # (NX's MOM_abort does not return; a host whose one does gets the error)
-        return -code error -errorcode [dict get $opts -errorcode] $msg
+proc fivax_abort {msg opts} {
+    global mom_path_name
+    # messages from the planner and the reader start with the position
+    set where [fivax_where]
+    if {![string match "event *" $where] && ![regexp {^(\S+:\d+|CL point \([^)]*\)): } $msg]} {
+        set msg "$where: $msg"
     }
+    if {[info exists mom_path_name] && $mom_path_name ne ""} {
+        append msg " (operation $mom_path_name)"
+    }
+    global fivax
+    if {[lindex [dict get $opts -errorcode] 0] ne "FIVAX"} {
+        lappend fivax(log) "internal error: [dict get $opts -errorinfo]"
+    }
+    lappend fivax(log) "error: $msg"
+    fivax_close_log
+    MOM_abort $msg
+    # (NX's MOM_abort does not return; a host whose one does gets the error)
+    return -code error -errorcode [dict get $opts -errorcode] $msg
+}
+
+# fivax_handler --
+#	Defines the proc name (no arguments: an event handler) that runs body
+#	and turns any error of it into fivax_abort. (The body is the proc's
+#	own, compiled with it: no uplevel on every event.)
+proc fivax_handler {name body} {
+    proc $name {} [list try $body on error {msg opts} {fivax_abort $msg $opts}]
 }
 
 # fivax_where -- Returns FILE:LINE of the current CL record (replay), else the operation and point.
@@ -116,7 +120,7 @@ proc fivax_close_log {} {
 #	NX needs: a 3-axis mill (NX passes the CL data through; fivax does the
 #	kinematics), the output unit of the machine, arcs and helixes in pieces
 #	of at most 360 degrees.
-proc fivax_setup {} {
+fivax_handler fivax_setup {
     global fivax fivax_settings fivax_post_dir env
     global mom_kin_machine_type mom_kin_output_unit mom_kin_arc_output_mode
     global mom_kin_helical_arc_output_mode mom_kin_nurbs_output_type
@@ -139,7 +143,7 @@ proc fivax_setup {} {
     set mom_kin_helical_arc_output_mode FULL_CIRCLE
     set mom_kin_nurbs_output_type BSPLINE
 }
-fivax_guard fivax_setup
+fivax_setup
 
 # fivax_program_name --
 #	Returns the program's name: the output file's base name, else the part
@@ -155,7 +159,7 @@ proc fivax_program_name {} {
     return PART
 }
 
-proc MOM_start_of_program {} {fivax_guard {
+fivax_handler MOM_start_of_program {
     global fivax fivax_post_dir mom_definition_file_name mom_output_unit
     set machine $fivax(machine)
     set unit [expr {[dict get $machine units] eq "inch" ? "IN" : "MM"}]
@@ -195,21 +199,21 @@ proc MOM_start_of_program {} {fivax_guard {
     set fivax(cycle) {}
     fivax_out [$fivax(out) start "[fivax_program_name] - [dict get $machine name]" \
         [fivax_program_name]]
-}}
+}
 
-proc MOM_start_of_path {} {fivax_guard {
+fivax_handler MOM_start_of_path {
     global fivax mom_path_name
     fivax_emit [$fivax(plan) startPath]
     fivax_out [list [$fivax(out) comment "OPERATION $mom_path_name"]]
     set fivax(opStart) 1
-}}
+}
 
-proc MOM_msys {} {fivax_guard {
+fivax_handler MOM_msys {
     global fivax mom_msys_origin mom_msys_matrix
     set m [lmap i {0 1 2 3 4 5 6 7 8} {set mom_msys_matrix($i)}]
     $fivax(plan) setFrame [list $mom_msys_origin(0) $mom_msys_origin(1) $mom_msys_origin(2)] \
         [lrange $m 0 2] [lrange $m 3 5]
-}}
+}
 
 proc MOM_first_tool {} {
     MOM_tool_change
@@ -219,7 +223,7 @@ proc MOM_first_tool {} {
 # "not set") means the tool number, and so does a negative one (with a
 # warning). The spindle goes up to the tool-change height first; the next
 # operation approaches from there.
-proc MOM_tool_change {} {fivax_guard {
+fivax_handler MOM_tool_change {
     global fivax mom_tool_number mom_tool_length mom_tool_length_adjust_register
     if {![info exists mom_tool_number] || ![string is entier -strict $mom_tool_number]
             || $mom_tool_number < 1} {
@@ -246,33 +250,33 @@ proc MOM_tool_change {} {fivax_guard {
     fivax_out [$fivax(out) toolChange $mom_tool_number $adjust]
     set fivax(positioned) 1
     incr fivax(toolChanges)
-}}
+}
 
 # Spindle and coolant: the handlers only mark the state when an operation
 # starts (as Post Builder posts do); the first move of the operation
 # writes it from the mom_spindle_* / mom_coolant_* globals, which NX sets
 # at the start of the path whether the events fire or not.
-proc MOM_spindle_rpm {} {fivax_guard {
+fivax_handler MOM_spindle_rpm {
     global fivax
     if {!$fivax(opStart)} {fivax_spindle}
-}}
+}
 
-proc MOM_spindle_off {} {fivax_guard {
+fivax_handler MOM_spindle_off {
     global fivax
     fivax_emit [$fivax(plan) flush]
     fivax_out [$fivax(out) spindleOff]
-}}
+}
 
-proc MOM_coolant_on {} {fivax_guard {
+fivax_handler MOM_coolant_on {
     global fivax
     if {!$fivax(opStart)} {fivax_coolant}
-}}
+}
 
-proc MOM_coolant_off {} {fivax_guard {
+fivax_handler MOM_coolant_off {
     global fivax
     fivax_emit [$fivax(plan) flush]
     fivax_out [$fivax(out) coolantOff]
-}}
+}
 
 # fivax_spindle --
 #	Writes the spindle start from mom_spindle_* (nothing when off or
@@ -304,8 +308,8 @@ proc fivax_coolant {} {
 # The first motion of an operation: NX names it initial_move (after a tool
 # change) or first_move in mom_motion_event; the motion type and the
 # programmed feed tell rapid from feed (a cycle positions to its R plane).
-proc MOM_initial_move {} {fivax_guard fivax_first_move}
-proc MOM_first_move {} {fivax_guard fivax_first_move}
+fivax_handler MOM_initial_move fivax_first_move
+fivax_handler MOM_first_move fivax_first_move
 
 # fivax_first_move -- Writes the operation's start (spindle, coolant), then its first motion.
 proc fivax_first_move {} {
@@ -332,15 +336,15 @@ proc fivax_first_move {} {
     }
 }
 
-proc MOM_rapid_move {} {fivax_guard {fivax_motion rapid}}
+fivax_handler MOM_rapid_move {fivax_motion rapid}
 
-proc MOM_linear_move {} {fivax_guard {fivax_motion feed}}
+fivax_handler MOM_linear_move {fivax_motion feed}
 
 # Arcs (CIRCLE + GOTO) and helixes go to the planner, which writes them as
 # the control's arcs where they stay arcs in the blocks' frame, else as
 # points within the arc tolerance.
-proc MOM_circular_move {} {fivax_guard fivax_arc}
-proc MOM_helix_move {} {fivax_guard fivax_arc}
+fivax_handler MOM_circular_move fivax_arc
+fivax_handler MOM_helix_move fivax_arc
 
 # fivax_arc -- Hands the points of the current arc piece to the planner.
 proc fivax_arc {} {
@@ -360,7 +364,7 @@ proc fivax_arc {} {
 
 # NURBS (NX's spline motion, mom_kin_nurbs_output_type BSPLINE): the
 # curve's points within the arc tolerance go to the planner.
-proc MOM_nurbs_move {} {fivax_guard fivax_nurbs}
+fivax_handler MOM_nurbs_move fivax_nurbs
 
 # fivax_nurbs -- Hands the points of the current NURBS (mom_nurbs_*) to the planner.
 proc fivax_nurbs {} {
@@ -380,7 +384,7 @@ proc fivax_nurbs {} {
     }
 }
 
-proc MOM_gohome_move {} {fivax_guard {fivax_motion rapid}}
+fivax_handler MOM_gohome_move {fivax_motion rapid}
 
 # fivax_motion --
 #	Hands a CL point (default: the current mom_mcs_goto) with the current
@@ -429,8 +433,8 @@ proc fivax_feed_zero {feed {what move}} {
 # layer has it and the tool is along the machine's Z, else moves.
 foreach fivax_event {drill drill_dwell drill_deep drill_break_chip tap bore bore_dwell
         bore_drag bore_no_drag bore_back bore_manual} {
-    proc MOM_$fivax_event {} [list fivax_guard [list fivax_cycle $fivax_event]]
-    proc MOM_${fivax_event}_move {} {fivax_guard fivax_hole}
+    fivax_handler MOM_$fivax_event [list fivax_cycle $fivax_event]
+    fivax_handler MOM_${fivax_event}_move fivax_hole
 }
 unset fivax_event
 
@@ -456,12 +460,12 @@ proc fivax_hole {} {
         [$fivax(out) canCycle [dict get $cycle event]] [fivax_where]]
 }
 
-proc MOM_cycle_off {} {fivax_guard {
+fivax_handler MOM_cycle_off {
     global fivax
     fivax_emit [$fivax(plan) flush]
     fivax_out [$fivax(out) cycleOff]
     set fivax(cycle) {}
-}}
+}
 
 # fivax_emit --
 #	Writes the planner's move records as blocks and checks each one;
@@ -490,36 +494,36 @@ proc fivax_emit {moves} {
     }
 }
 
-proc MOM_end_of_path {} {fivax_guard {
+fivax_handler MOM_end_of_path {
     global fivax
     fivax_emit [$fivax(plan) endPath]
-}}
+}
 
-proc MOM_pprint {} {fivax_guard {
+fivax_handler MOM_pprint {
     global fivax mom_pprint
     fivax_emit [$fivax(plan) flush]
     fivax_out [list [$fivax(out) comment $mom_pprint]]
-}}
+}
 
-proc MOM_insert {} {fivax_guard {
+fivax_handler MOM_insert {
     global fivax mom_Instruction
     fivax_emit [$fivax(plan) flush]
     fivax_out [$fivax(out) literal $mom_Instruction]
-}}
+}
 
-proc MOM_stop {} {fivax_guard {
+fivax_handler MOM_stop {
     global fivax
     fivax_emit [$fivax(plan) flush]
     fivax_out [$fivax(out) stop 0]
-}}
+}
 
-proc MOM_opstop {} {fivax_guard {
+fivax_handler MOM_opstop {
     global fivax
     fivax_emit [$fivax(plan) flush]
     fivax_out [$fivax(out) stop 1]
-}}
+}
 
-proc MOM_delay {} {fivax_guard {
+fivax_handler MOM_delay {
     global fivax mom_delay_value mom_delay_mode
     fivax_emit [$fivax(plan) flush]
     if {[info exists mom_delay_value] && (![info exists mom_delay_mode]
@@ -528,9 +532,9 @@ proc MOM_delay {} {fivax_guard {
     } else {
         fivax_warn "a dwell in spindle revolutions is not written: program it in seconds"
     }
-}}
+}
 
-proc MOM_end_of_program {} {fivax_guard {
+fivax_handler MOM_end_of_program {
     global fivax fivax_summary
     fivax_emit [$fivax(plan) finish]
     fivax_out [$fivax(out) end]
@@ -538,4 +542,4 @@ proc MOM_end_of_program {} {fivax_guard {
         [dict create toolChanges $fivax(toolChanges) postWarnings $fivax(warnings)]]
     MOM_output_to_listing_device "fivax summary: $fivax_summary"
     fivax_close_log
-}}
+}
