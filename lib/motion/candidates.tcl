@@ -183,10 +183,11 @@ proc ::fivax::motion::InCone {ctx t} {
 }
 
 # ::fivax::motion::Quantize --
-#	Returns rotary value q (rad) rounded to the output resolution step (the
-#	context's step; 0: exact).
-proc ::fivax::motion::Quantize {step q} {
-    expr {$step > 0 ? round($q / $step) * $step : $q}
+#	Returns the list of the rotary values (rad) given, each rounded to the
+#	output resolution step (the context's step; 0: exact).
+proc ::fivax::motion::Quantize {step args} {
+    if {$step > 0} {return [lmap q $args {expr {round($q / $step) * $step}}]}
+    return $args
 }
 
 # ::fivax::motion::Pick --

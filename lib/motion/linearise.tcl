@@ -28,7 +28,10 @@ oo::define ::fivax::motion::Planner {
         lassign $a ja Pa ta acta la
         lassign $b jb Pb tb actb lb
         if {$depth == 0} {
-            ::fivax::motion::CheckFlip $ta $tb $src
+            # (axes with a positive dot product are less than 90 deg apart)
+            lassign $ta ax ay az
+            lassign $tb bx by bz
+            if {$ax * $bx + $ay * $by + $az * $bz <= 0.0} {::fivax::motion::CheckFlip $ta $tb $src}
             set S(pieces) 0
         }
         set ok [expr {[::fivax::motion::Cost $S(ms1) $S(ms2) 1 [lindex $ja 3] [lindex $ja 4] $la \
@@ -86,12 +89,9 @@ oo::define ::fivax::motion::Planner {
 #	Raises {FIVAX MOTION FLIP} naming src when the unit CL axes ta and tb
 #	of a cutting move are opposite (within flipSlack): the axis could turn
 #	from one to the other about any great circle, so the CL path between
-#	them is undefined.
+#	them is undefined. (Linearise calls it only for axes at least 90 deg
+#	apart.)
 proc ::fivax::motion::CheckFlip {ta tb src} {
-    # (axes with a positive dot product are less than 90 deg apart)
-    lassign $ta ax ay az
-    lassign $tb bx by bz
-    if {$ax * $bx + $ay * $by + $az * $bz > 0.0} return
     variable pi
     variable flipSlack
     if {[::fivax::vec::angle $ta $tb] <= $pi - $flipSlack} return
@@ -118,7 +118,7 @@ proc ::fivax::motion::Split {ctx a b n src} {
         foreach end [list $a $b] other [list $b $a] {
             lassign $end je P t
             if {[InCone $ctx $t]} {
-                set c [Quantize [dict get $ctx step] [Departure $ctx $end $other $src]]
+                set c [lindex [Quantize [dict get $ctx step] [Departure $ctx $end $other $src]] 0]
                 if {abs($c - [lindex $je 4]) > 1e-9} {
                     set q1 [HoldTilt $ctx $t [lindex $je 3] $c]
                     if {$q1 ne ""} {return [list [Record $ctx $P $t $q1 $c -1 1]]}

@@ -13,8 +13,7 @@
 #	singular cone, where candidates are exact. Rotaries are rounded to the
 #	output resolution first, so that X Y Z absorb the rounding.
 proc ::fivax::motion::Record {ctx P t q1 q2 lab cone} {
-    set step [dict get $ctx step]
-    set q [list [Quantize $step $q1] [Quantize $step $q2]]
+    set q [Quantize [dict get $ctx step] $q1 $q2]
     set joints [list {*}[::fivax::kin::position [dict get $ctx model] $P $q] {*}$q]
     if {!$cone} {return [list $joints $P $t $t $lab]}
     list $joints $P $t [lindex [::fivax::kin::forward [dict get $ctx model] $joints] 1] $lab
@@ -65,7 +64,8 @@ oo::define ::fivax::motion::Planner {
         if {$S(plane) ne ""} {
             ::fivax::machine::checkLimits $S(machine) [list X $X Y $Y Z $Z] $src
         }
-        lassign [my Out $joints] X Y Z
+        # (in the joint frame X Y Z are the machine's, see Out)
+        if {$S(plane) ne "" || $S(tcp)} {lassign [my Out $joints] X Y Z}
         if {[lindex $write end] eq "R"} {
             set write [lrange $write 0 end-1]
             if {$S(plane) eq ""} {lappend write $S(n1) $S(n2)}

@@ -178,6 +178,7 @@ oo::class create ::fivax::motion::Planner {
     # Sets the MSYS frame (origin and unit X, Y axes of the MCS in absolute
     # coordinates); CL data are mapped through it when -msys is on.
     method setFrame {origin xaxis yaxis} {
+        if {!$S(msys)} return
         set S(frame) [list $origin $xaxis $yaxis [::fivax::vec::cross $xaxis $yaxis]]
     }
 
@@ -197,9 +198,12 @@ oo::class create ::fivax::motion::Planner {
     # optimiser's window fills (see flush).
     # Errors: {FIVAX MOTION UNREACHABLE}, {FIVAX MOTION LIMIT}.
     method add {kind P t feed src} {
-        lassign [my Route [list add $kind $P $t $feed $src] $t] done pre
-        if {$done} {return $pre}
-        lassign [my ToWork $P $t] P t
+        set pre {}
+        if {$S(wp) ne "off"} {
+            lassign [my Route [list add $kind $P $t $feed $src] $t] done pre
+            if {$done} {return $pre}
+        }
+        if {$S(frame) ne ""} {lassign [my ToWork $P $t] P t}
         list {*}$pre {*}[my AddWork $kind $P [::fivax::vec::unit $t] $feed $src]
     }
 
@@ -269,9 +273,10 @@ oo::class create ::fivax::motion::Planner {
         return $moves
     }
 
-    # Returns {P t} mapped through the MSYS frame when enabled.
+    # Returns {P t} mapped through the MSYS frame when enabled (S(frame)
+    # is set only then).
     method ToWork {P t} {
-        if {!$S(msys) || $S(frame) eq ""} {return [list $P $t]}
+        if {$S(frame) eq ""} {return [list $P $t]}
         lassign $S(frame) o x y z
         set Pw [::fivax::vec::add $o [::fivax::motion::FrameApply $x $y $z $P]]
         list $Pw [::fivax::motion::FrameApply $x $y $z $t]
@@ -466,9 +471,9 @@ oo::class create ::fivax::motion::Planner {
             while {$e < $n && [lindex $S(buf) $e 6]} {incr e}
             if {$e >= $n} break
             # the azimuth the path leaves the cone with (as Split sees it)
-            set q2 [::fivax::motion::Quantize [dict get $ctx step] [::fivax::motion::Departure $ctx \
-                [my PathRecord $path [expr {$e - 1}]] [my PathRecord $path $e] \
-                [lindex $S(buf) $e 4]]]
+            set q2 [lindex [::fivax::motion::Quantize [dict get $ctx step] \
+                [::fivax::motion::Departure $ctx [my PathRecord $path [expr {$e - 1}]] \
+                [my PathRecord $path $e] [lindex $S(buf) $e 4]]] 0]
             set ok 1
             for {set i $j} {$i < $e} {incr i} {
                 set q1 [lindex $S(buf) $i 5 [expr {5 * [lindex $path $i]}]]
