@@ -18,7 +18,7 @@ oo::define ::fivax::motion::Planner {
     # length), each checked in turn, at most maxDepth levels deep and into
     # at most maxPieces pieces in all (a move of absurd length would
     # otherwise take 16^maxDepth of them). Where the CL path between a and
-    # b runs out of the limits (a piece no cutting move can do, see Cost),
+    # b runs out of the limits (a piece no cutting move can do, see Continues),
     # it is halved instead, and the piece left at the deepest level gets
     # the flag retract. Refused with src: a move whose CL axes are
     # opposite (no great circle between them), and, before it is split, a
@@ -34,8 +34,8 @@ oo::define ::fivax::motion::Planner {
             if {$ax * $bx + $ay * $by + $az * $bz <= 0.0} {::fivax::motion::CheckFlip $ta $tb $src}
             set S(pieces) 0
         }
-        set ok [expr {[::fivax::motion::Cost $S(ms1) $S(ms2) 1 [lindex $ja 3] [lindex $ja 4] $la \
-            [lindex $jb 3] [lindex $jb 4] $lb] < $S(retractCost)}]
+        set ok [::fivax::motion::Continues $S(ms1) $S(ms2) [lindex $ja 3] [lindex $ja 4] $la \
+            [lindex $jb 3] [lindex $jb 4] $lb]
         set n 2
         if {$ok} {
             # First the bound (kin interpolationBound): it proves most moves

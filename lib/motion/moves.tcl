@@ -34,8 +34,8 @@ oo::define ::fivax::motion::Planner {
         } else {
             lassign $S(last) ja - ta - al
             lassign $ja - - - a1 a2
-            if {[::fivax::motion::Cost $S(ms1) $S(ms2) 1 $a1 $a2 $al $q1 $q2 $lab] < $S(retractCost)} {
-                # (as abs(), see Cost)
+            if {[::fivax::motion::Continues $S(ms1) $S(ms2) $a1 $a2 $al $q1 $q2 $lab]} {
+                # (as abs(), see Continues)
                 if {($q2 > $a2 ? $q2 - $a2 : $a2 - $q2) > $S(swingRad)} {my CountSwing $ta $t}
                 # (FeedMoves adds the travel of its moves itself)
                 set moves [my FeedMoves [my Linearise $S(last) $b 0 $src] $feed $src]
@@ -149,7 +149,7 @@ oo::define ::fivax::motion::Planner {
         foreach move $moves {
             lassign [dict get $move axes] - - - - - - - q1 - q2
             if {$from} {
-                # (as abs(), see Cost)
+                # (as abs(), see Continues)
                 set S(travel) [expr {$S(travel) + ($q1 > $p1 ? $q1 - $p1 : $p1 - $q1)
                     + ($q2 > $p2 ? $q2 - $p2 : $p2 - $q2)}]
             }

@@ -128,7 +128,7 @@ oo::class create ::fivax::motion::Planner {
         # -atol 0: no check of the tool axis between blocks
         set S(atolCheck) [expr {$S(atol) > 0 ? [::fivax::num::rad $S(atol)] : Inf}]
         set S(swingRad) [::fivax::num::rad $S(swing)]
-        # the cost of a retract (see Cost), for the per-point tests
+        # the cost of a retract (see Relax)
         namespace upvar ::fivax::motion retractCost retractCost
         set S(retractCost) $retractCost
         lassign $S(weights) S(w1) S(w2)
@@ -149,7 +149,7 @@ oo::class create ::fivax::motion::Planner {
         array set S {last "" lastHole "" buf {} pathStart 1 points 0 moves 0 travel 0.0
             inserted 0 retracts 0 holds 0 swings 0 unresolved 0 forced 0 dwells 0
             dwellTurn 0.0 clamps 0 slowdown 0.0 lastKind "" lastSrc ""
-            held "" heldAxis "" plane "" planeSaved "" wp off}
+            held "" heldAxis "" plane "" planeSaved "" wp off clampIn -Inf clampOut ""}
         set S(entryFeed) [dict get $machine entry_feed]
         my setTool [dict get $machine tool_length]
     }
@@ -312,7 +312,7 @@ oo::class create ::fivax::motion::Planner {
             set isFeed [expr {$kind eq "feed"}]
             set ok {}
             foreach {b1 b2 bl} $cands {
-                if {[::fivax::motion::Cost $ms1 $ms2 $isFeed $a1 $a2 $al $b1 $b2 $bl] < $S(retractCost)} {
+                if {!$isFeed || [::fivax::motion::Continues $ms1 $ms2 $a1 $a2 $al $b1 $b2 $bl]} {
                     lappend ok $b1 $b2 $bl
                 }
             }
@@ -359,7 +359,14 @@ oo::class create ::fivax::motion::Planner {
                     + $zeroCost * (abs($b1) + abs($b2))}] -1
             }
         } else {
-            set states [my Relax $prev $cands [expr {$kind eq "feed"}] $t $src]
+            if {[llength $cands] == 3 && [llength $prev] == 5 && $S(on-limit) ne "error"} {
+                # one candidate reached from one state, a retract allowed
+                # (see Relax): that state is its predecessor, its
+                # normalised cost 0
+                set states [list {*}$cands 0.0 0]
+            } else {
+                set states [my Relax $prev $cands [expr {$kind eq "feed"}] $t $src]
+            }
             if {$fresh} {
                 set i 3
                 foreach {b1 b2 - c -} $states {
@@ -374,8 +381,9 @@ oo::class create ::fivax::motion::Planner {
     }
 
     # Returns the states (see AddWork) of the candidate triples cands reached
-    # from the states prev by a move of the given kind (isFeed 1: cutting).
-    # With -on-limit error, moves needing a retract are excluded and a
+    # from the states prev by a move of the given kind (isFeed 1: cutting),
+    # the cost of a move being its weighted travel plus retractCost when a
+    # cutting move cannot go continuously (see Continues). With -on-limit error, moves needing a retract are excluded and a
     # layer left unreachable raises {FIVAX MOTION LIMIT} naming src. States
     # equal mod 360 deg on unlimited continuous axes have the same future;
     # only the cheaper is kept.
@@ -392,7 +400,12 @@ oo::class create ::fivax::motion::Planner {
             set arg -1
             set i 0
             foreach {a1 a2 al ac -} $prev {
-                set c [::fivax::motion::Cost $ms1 $ms2 $isFeed $a1 $a2 $al $b1 $b2 $bl $w1 $w2]
+                # (as abs(), see Continues)
+                set c [expr {$w1 * ($b1 > $a1 ? $b1 - $a1 : $a1 - $b1)
+                    + $w2 * ($b2 > $a2 ? $b2 - $a2 : $a2 - $b2)}]
+                if {$isFeed && ![::fivax::motion::Continues $ms1 $ms2 $a1 $a2 $al $b1 $b2 $bl]} {
+                    set c [expr {$c + $S(retractCost)}]
+                }
                 if {!($err && $c >= $S(retractCost)) && $ac + $c < $best} {
                     set best [expr {$ac + $c}]
                     set arg $i
