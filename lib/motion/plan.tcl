@@ -446,17 +446,15 @@ oo::class create ::fivax::motion::Planner {
             set forced [expr {$m < $n / 2 - 1}]
         }
         set moves {}
-        set azimuths [my Departures $path $k]
-        set j 0
-        foreach layer [lrange $S(buf) 0 [expr {$k - 1}]] i [lrange $path 0 [expr {$k - 1}]] {
+        foreach layer [lrange $S(buf) 0 [expr {$k - 1}]] i [lrange $path 0 [expr {$k - 1}]] \
+                az [my Departures $path $k] {
             lassign $layer kind P t feed src states cone
             lassign [lrange $states [expr {5 * $i}] [expr {5 * $i + 2}]] q1 q2 lab
-            if {[dict exists $azimuths $j]} {
-                set q2 [dict get $azimuths $j]
+            if {$az ne ""} {
+                set q2 $az
                 set q1 [::fivax::motion::HoldTilt $S(ctx) $t $q1 $q2]
             }
             lappend moves {*}[my Emit $kind $P $t $feed $src $cone $q1 $q2 $lab]
-            incr j
         }
         set S(buf) [lrange $S(buf) $k end]
         if {$forced} {
@@ -466,7 +464,8 @@ oo::class create ::fivax::motion::Planner {
         return $moves
     }
 
-    # Returns the azimuths (layer index -> q2) that the approach sets:
+    # Returns the azimuths of layers 0 .. k-1 that the approach sets (q2,
+    # "" where the path's own stays):
     # where a rapid reaches the singular cone (the azimuth free there) and
     # the path then leaves the cone, the rapid and the cone points after it
     # take the azimuth the path leaves with (Departure: its limit at the
@@ -476,10 +475,13 @@ oo::class create ::fivax::motion::Planner {
     # stays within the limits at that azimuth.
     method Departures {path k} {
         set ctx $S(ctx)
-        set out [dict create]
+        set out [lrepeat $k ""]
         set n [llength $path]
-        for {set j 0} {$j < $k} {incr j} {
-            if {[lindex $S(buf) $j 0] ne "rapid" || ![lindex $S(buf) $j 6]} continue
+        # (the held rapids, and after a run the first layer past it)
+        set next 0
+        foreach j [lsearch -all -exact -index 0 $S(buf) rapid] {
+            if {$j >= $k} break
+            if {$j < $next || ![lindex $S(buf) $j 6]} continue
             set e $j
             while {$e < $n && [lindex $S(buf) $e 6]} {incr e}
             if {$e >= $n} break
@@ -493,9 +495,9 @@ oo::class create ::fivax::motion::Planner {
                 if {[::fivax::motion::HoldTilt $ctx [lindex $S(buf) $i 2] $q1 $q2] eq ""} {set ok 0}
             }
             if {$ok && $e < $k} {
-                for {set i $j} {$i < $e} {incr i} {dict set out $i $q2}
+                for {set i $j} {$i < $e} {incr i} {lset out $i $q2}
             }
-            set j [expr {$e - 1}]
+            set next $e
         }
         return $out
     }
@@ -568,9 +570,8 @@ proc ::fivax::motion::BestState {states} {
 #	in state index last of the last layer.
 proc ::fivax::motion::Trace {buf last} {
     set path [list $last]
-    for {set j [expr {[llength $buf] - 1}]} {$j > 0} {incr j -1} {
-        set last [lindex $buf $j 5 [expr {5 * $last + 4}]]
-        lappend path $last
+    foreach layer [lreverse [lrange $buf 1 end]] {
+        lappend path [set last [lindex $layer 5 [expr {5 * $last + 4}]]]
     }
     lreverse $path
 }
