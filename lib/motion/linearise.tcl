@@ -18,8 +18,8 @@ oo::define ::fivax::motion::Planner {
     # length), each checked in turn, at most maxDepth levels deep and into
     # at most maxPieces pieces in all (a move of absurd length would
     # otherwise take 16^maxDepth of them). Where the CL path between a and
-    # b runs out of the limits (a piece no cutting move can do, see Continues),
-    # it is halved instead, and the piece left at the deepest level gets
+    # b runs out of the limits (a piece no cutting move can do, see
+    # Continues), it is halved instead, and the piece left at the deepest level gets
     # the flag retract. Refused with src: a move whose CL axes are
     # opposite (no great circle between them), and, before it is split, a
     # move ending outside the machine's travel.
@@ -31,7 +31,9 @@ oo::define ::fivax::motion::Planner {
             # (axes with a positive dot product are less than 90 deg apart)
             lassign $ta ax ay az
             lassign $tb bx by bz
-            if {$ax * $bx + $ay * $by + $az * $bz <= 0.0} {::fivax::motion::CheckFlip $ta $tb $src}
+            if {$ax * $bx + $ay * $by + $az * $bz <= 0.0} {
+                ::fivax::motion::CheckFlip $ta $tb $src
+            }
             set S(pieces) 0
         }
         set ok [::fivax::motion::Continues $S(ms1) $S(ms2) [lindex $ja 3] [lindex $ja 4] $la \

@@ -383,7 +383,8 @@ oo::class create ::fivax::motion::Planner {
     # Returns the states (see AddWork) of the candidate triples cands reached
     # from the states prev by a move of the given kind (isFeed 1: cutting),
     # the cost of a move being its weighted travel plus retractCost when a
-    # cutting move cannot go continuously (see Continues). With -on-limit error, moves needing a retract are excluded and a
+    # cutting move cannot go continuously (see Continues). With -on-limit
+    # error, moves needing a retract are excluded and a
     # layer left unreachable raises {FIVAX MOTION LIMIT} naming src. States
     # equal mod 360 deg on unlimited continuous axes have the same future;
     # only the cheaper is kept.
