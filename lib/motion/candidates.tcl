@@ -183,10 +183,11 @@ proc ::fivax::motion::InCone {ctx t} {
 }
 
 # ::fivax::motion::Quantize --
-#	Returns rotary value q (rad) rounded to the output resolution step (the
-#	context's step; 0: exact).
-proc ::fivax::motion::Quantize {step q} {
-    expr {$step > 0 ? round($q / $step) * $step : $q}
+#	Returns the list of the rotary values (rad) given, each rounded to the
+#	output resolution step (the context's step; 0: exact).
+proc ::fivax::motion::Quantize {step args} {
+    if {$step > 0} {return [lmap q $args {expr {round($q / $step) * $step}}]}
+    return $args
 }
 
 # ::fivax::motion::Pick --
@@ -230,7 +231,7 @@ proc ::fivax::motion::Closest {cands g1 g2 la lb} {
     set any {}
     set ad Inf
     foreach {x y lab} $cands {
-        # (as abs(), see Cost)
+        # (as abs(), see Continues)
         set d [expr {($x > $g1 ? $x - $g1 : $g1 - $x) + ($y > $g2 ? $y - $g2 : $g2 - $y)}]
         if {[Joins $lab $la] && [Joins $lab $lb]} {
             if {$d < $bd} {set bd $d; set best [list $x $y $lab]}
@@ -242,23 +243,17 @@ proc ::fivax::motion::Closest {cands g1 g2 la lb} {
     expr {$best ne "" ? [list $best $bd] : [list $any Inf]}
 }
 
-# ::fivax::motion::Cost --
-#	Returns the cost of going from rotaries {a1 a2} on branch al to
-#	{b1 b2} on branch bl: the weighted travel (rad), plus retractCost when
-#	a cutting move (isFeed 1) cannot get there continuously: a change of
-#	branch outside the singular cone (branch -1), or a swing above the
-#	machine's max_swing (ms1, ms2).
-proc ::fivax::motion::Cost {ms1 ms2 isFeed a1 a2 al b1 b2 bl {w1 1.0} {w2 1.0}} {
+# ::fivax::motion::Continues --
+#	Returns 1 when a cutting move can go continuously from rotaries
+#	{a1 a2} on branch al to {b1 b2} on branch bl, 0 when it needs a
+#	retract: a change of branch outside the singular cone (branch -1), or
+#	a swing above the machine's max_swing (ms1, ms2).
+proc ::fivax::motion::Continues {ms1 ms2 a1 a2 al b1 b2 bl} {
     # (abs() is a command call in expr: the ternaries give the same results
     # at a fraction of the cost, a zero differing only in its sign; the same
     # branch joins: Joins is asked only when they differ)
-    set d1 [expr {$b1 > $a1 ? $b1 - $a1 : $a1 - $b1}]
-    set d2 [expr {$b2 > $a2 ? $b2 - $a2 : $a2 - $b2}]
-    if {!$isFeed || (($al == $bl || [Joins $al $bl]) && $d1 <= $ms1 && $d2 <= $ms2)} {
-        return [expr {$w1 * $d1 + $w2 * $d2}]
-    }
-    variable retractCost
-    expr {$w1 * $d1 + $w2 * $d2 + $retractCost}
+    expr {($al == $bl || [Joins $al $bl]) && ($b1 > $a1 ? $b1 - $a1 : $a1 - $b1) <= $ms1
+        && ($b2 > $a2 ? $b2 - $a2 : $a2 - $b2) <= $ms2}
 }
 
 # ::fivax::motion::Joins --

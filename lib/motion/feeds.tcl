@@ -27,7 +27,12 @@ oo::define ::fivax::motion::Planner {
     # tip stays put (at the singular direction, where the path leaves the
     # pole with another azimuth).
     method FeedMoves {pts feed src} {
-        set f [my FeedClamp $feed]
+        # (the feed changes seldom: its clamp is kept)
+        if {$feed != $S(clampIn)} {
+            set S(clampIn) $feed
+            set S(clampOut) [my FeedClamp $feed]
+        }
+        set f $S(clampOut)
         set prev $S(last)
         lassign $prev ja Pa
         set moves {}
@@ -38,7 +43,7 @@ oo::define ::fivax::motion::Planner {
             lassign $p jb Pb t - - flag
             lassign $ja X0 Y0 Z0 a1 a2
             lassign $jb X1 Y1 Z1 b1 b2
-            # (as abs(), see Cost)
+            # (as abs(), see Continues)
             set d1 [expr {$b1 > $a1 ? $b1 - $a1 : $a1 - $b1}]
             set d2 [expr {$b2 > $a2 ? $b2 - $a2 : $a2 - $b2}]
             set S(travel) [expr {$S(travel) + $d1 + $d2}]

@@ -46,8 +46,11 @@ oo::define ::fivax::motion::Planner {
     # move records. A native arc record (see NativeArc) where it can be
     # one, else the arc's points within tol (mm) as cutting moves.
     method arc {P0 P1 center n sense turns t feed src tol} {
-        lassign [my Route [list arc $P0 $P1 $center $n $sense $turns $t $feed $src $tol] $t] done pre
-        if {$done} {return $pre}
+        set pre {}
+        if {$S(wp) ne "off"} {
+            lassign [my Route [list arc $P0 $P1 $center $n $sense $turns $t $feed $src $tol] $t] done pre
+            if {$done} {return $pre}
+        }
         lassign [my ToWork $P0 $t] P0 tw
         lassign [my ToWork $P1 $t] P1
         lassign [my ToWork $center $n] C nw
@@ -140,9 +143,9 @@ oo::define ::fivax::motion::Planner {
     # flush); it is then posted in its plane when it cuts (StartPlane),
     # as usual otherwise. An axis change at a cutting move means five-axis
     # machining: the rest of the operation is posted as usual. The state
-    # S(wp): off, free (posting as usual, watching), hold, plane.
+    # S(wp): off, free (posting as usual, watching), hold, plane; the
+    # callers route items only when it is not off.
     method Route {item t} {
-        if {$S(wp) eq "off"} {return {0 {}}}
         set tw [::fivax::vec::unit [lindex [my ToWork {0.0 0.0 0.0} $t] 1]]
         set positioning [expr {[lindex $item 0] eq "hole"
             || ([lindex $item 0] eq "add" && [lindex $item 1] eq "rapid")}]

@@ -31,8 +31,11 @@ oo::define ::fivax::motion::Planner {
     # can neither be native nor expanded here.
     method hole {P t cycle native src} {
         namespace upvar ::fivax::motion expandable expandable
-        lassign [my Route [list hole $P $t $cycle $native $src] $t] done pre
-        if {$done} {return $pre}
+        set pre {}
+        if {$S(wp) ne "off"} {
+            lassign [my Route [list hole $P $t $cycle $native $src] $t] done pre
+            if {$done} {return $pre}
+        }
         set moves [concat $pre [my flush]]
         lassign [my ToWork $P $t] P t
         set t [::fivax::vec::unit $t]

@@ -18,8 +18,8 @@ oo::define ::fivax::motion::Planner {
     # length), each checked in turn, at most maxDepth levels deep and into
     # at most maxPieces pieces in all (a move of absurd length would
     # otherwise take 16^maxDepth of them). Where the CL path between a and
-    # b runs out of the limits (a piece no cutting move can do, see Cost),
-    # it is halved instead, and the piece left at the deepest level gets
+    # b runs out of the limits (a piece no cutting move can do, see
+    # Continues), it is halved instead, and the piece left at the deepest level gets
     # the flag retract. Refused with src: a move whose CL axes are
     # opposite (no great circle between them), and, before it is split, a
     # move ending outside the machine's travel.
@@ -28,11 +28,16 @@ oo::define ::fivax::motion::Planner {
         lassign $a ja Pa ta acta la
         lassign $b jb Pb tb actb lb
         if {$depth == 0} {
-            ::fivax::motion::CheckFlip $ta $tb $src
+            # (axes with a positive dot product are less than 90 deg apart)
+            lassign $ta ax ay az
+            lassign $tb bx by bz
+            if {$ax * $bx + $ay * $by + $az * $bz <= 0.0} {
+                ::fivax::motion::CheckFlip $ta $tb $src
+            }
             set S(pieces) 0
         }
-        set ok [expr {[::fivax::motion::Cost $S(ms1) $S(ms2) 1 [lindex $ja 3] [lindex $ja 4] $la \
-            [lindex $jb 3] [lindex $jb 4] $lb] < $S(retractCost)}]
+        set ok [::fivax::motion::Continues $S(ms1) $S(ms2) [lindex $ja 3] [lindex $ja 4] $la \
+            [lindex $jb 3] [lindex $jb 4] $lb]
         set n 2
         if {$ok} {
             # First the bound (kin interpolationBound): it proves most moves
@@ -86,12 +91,9 @@ oo::define ::fivax::motion::Planner {
 #	Raises {FIVAX MOTION FLIP} naming src when the unit CL axes ta and tb
 #	of a cutting move are opposite (within flipSlack): the axis could turn
 #	from one to the other about any great circle, so the CL path between
-#	them is undefined.
+#	them is undefined. (Linearise calls it only for axes at least 90 deg
+#	apart.)
 proc ::fivax::motion::CheckFlip {ta tb src} {
-    # (axes with a positive dot product are less than 90 deg apart)
-    lassign $ta ax ay az
-    lassign $tb bx by bz
-    if {$ax * $bx + $ay * $by + $az * $bz > 0.0} return
     variable pi
     variable flipSlack
     if {[::fivax::vec::angle $ta $tb] <= $pi - $flipSlack} return
@@ -118,7 +120,7 @@ proc ::fivax::motion::Split {ctx a b n src} {
         foreach end [list $a $b] other [list $b $a] {
             lassign $end je P t
             if {[InCone $ctx $t]} {
-                set c [Quantize [dict get $ctx step] [Departure $ctx $end $other $src]]
+                set c [lindex [Quantize [dict get $ctx step] [Departure $ctx $end $other $src]] 0]
                 if {abs($c - [lindex $je 4]) > 1e-9} {
                     set q1 [HoldTilt $ctx $t [lindex $je 3] $c]
                     if {$q1 ne ""} {return [list [Record $ctx $P $t $q1 $c -1 1]]}

@@ -13,8 +13,7 @@
 #	singular cone, where candidates are exact. Rotaries are rounded to the
 #	output resolution first, so that X Y Z absorb the rounding.
 proc ::fivax::motion::Record {ctx P t q1 q2 lab cone} {
-    set step [dict get $ctx step]
-    set q [list [Quantize $step $q1] [Quantize $step $q2]]
+    set q [Quantize [dict get $ctx step] $q1 $q2]
     set joints [list {*}[::fivax::kin::position [dict get $ctx model] $P $q] {*}$q]
     if {!$cone} {return [list $joints $P $t $t $lab]}
     list $joints $P $t [lindex [::fivax::kin::forward [dict get $ctx model] $joints] 1] $lab
@@ -35,8 +34,8 @@ oo::define ::fivax::motion::Planner {
         } else {
             lassign $S(last) ja - ta - al
             lassign $ja - - - a1 a2
-            if {[::fivax::motion::Cost $S(ms1) $S(ms2) 1 $a1 $a2 $al $q1 $q2 $lab] < $S(retractCost)} {
-                # (as abs(), see Cost)
+            if {[::fivax::motion::Continues $S(ms1) $S(ms2) $a1 $a2 $al $q1 $q2 $lab]} {
+                # (as abs(), see Continues)
                 if {($q2 > $a2 ? $q2 - $a2 : $a2 - $q2) > $S(swingRad)} {my CountSwing $ta $t}
                 # (FeedMoves adds the travel of its moves itself)
                 set moves [my FeedMoves [my Linearise $S(last) $b 0 $src] $feed $src]
@@ -65,7 +64,8 @@ oo::define ::fivax::motion::Planner {
         if {$S(plane) ne ""} {
             ::fivax::machine::checkLimits $S(machine) [list X $X Y $Y Z $Z] $src
         }
-        lassign [my Out $joints] X Y Z
+        # (in the joint frame X Y Z are the machine's, see Out)
+        if {$S(plane) ne "" || $S(tcp)} {lassign [my Out $joints] X Y Z}
         if {[lindex $write end] eq "R"} {
             set write [lrange $write 0 end-1]
             if {$S(plane) eq ""} {lappend write $S(n1) $S(n2)}
@@ -149,7 +149,7 @@ oo::define ::fivax::motion::Planner {
         foreach move $moves {
             lassign [dict get $move axes] - - - - - - - q1 - q2
             if {$from} {
-                # (as abs(), see Cost)
+                # (as abs(), see Continues)
                 set S(travel) [expr {$S(travel) + ($q1 > $p1 ? $q1 - $p1 : $p1 - $q1)
                     + ($q2 > $p2 ? $q2 - $p2 : $p2 - $q2)}]
             }

@@ -128,7 +128,7 @@ oo::class create ::fivax::motion::Planner {
         # -atol 0: no check of the tool axis between blocks
         set S(atolCheck) [expr {$S(atol) > 0 ? [::fivax::num::rad $S(atol)] : Inf}]
         set S(swingRad) [::fivax::num::rad $S(swing)]
-        # the cost of a retract (see Cost), for the per-point tests
+        # the cost of a retract (see Relax)
         namespace upvar ::fivax::motion retractCost retractCost
         set S(retractCost) $retractCost
         lassign $S(weights) S(w1) S(w2)
@@ -149,7 +149,7 @@ oo::class create ::fivax::motion::Planner {
         array set S {last "" lastHole "" buf {} pathStart 1 points 0 moves 0 travel 0.0
             inserted 0 retracts 0 holds 0 swings 0 unresolved 0 forced 0 dwells 0
             dwellTurn 0.0 clamps 0 slowdown 0.0 lastKind "" lastSrc ""
-            held "" heldAxis "" plane "" planeSaved "" wp off}
+            held "" heldAxis "" plane "" planeSaved "" wp off clampIn -Inf clampOut ""}
         set S(entryFeed) [dict get $machine entry_feed]
         my setTool [dict get $machine tool_length]
     }
@@ -178,6 +178,7 @@ oo::class create ::fivax::motion::Planner {
     # Sets the MSYS frame (origin and unit X, Y axes of the MCS in absolute
     # coordinates); CL data are mapped through it when -msys is on.
     method setFrame {origin xaxis yaxis} {
+        if {!$S(msys)} return
         set S(frame) [list $origin $xaxis $yaxis [::fivax::vec::cross $xaxis $yaxis]]
     }
 
@@ -197,9 +198,12 @@ oo::class create ::fivax::motion::Planner {
     # optimiser's window fills (see flush).
     # Errors: {FIVAX MOTION UNREACHABLE}, {FIVAX MOTION LIMIT}.
     method add {kind P t feed src} {
-        lassign [my Route [list add $kind $P $t $feed $src] $t] done pre
-        if {$done} {return $pre}
-        lassign [my ToWork $P $t] P t
+        set pre {}
+        if {$S(wp) ne "off"} {
+            lassign [my Route [list add $kind $P $t $feed $src] $t] done pre
+            if {$done} {return $pre}
+        }
+        if {$S(frame) ne ""} {lassign [my ToWork $P $t] P t}
         list {*}$pre {*}[my AddWork $kind $P [::fivax::vec::unit $t] $feed $src]
     }
 
@@ -269,9 +273,10 @@ oo::class create ::fivax::motion::Planner {
         return $moves
     }
 
-    # Returns {P t} mapped through the MSYS frame when enabled.
+    # Returns {P t} mapped through the MSYS frame when enabled (S(frame)
+    # is set only then).
     method ToWork {P t} {
-        if {!$S(msys) || $S(frame) eq ""} {return [list $P $t]}
+        if {$S(frame) eq ""} {return [list $P $t]}
         lassign $S(frame) o x y z
         set Pw [::fivax::vec::add $o [::fivax::motion::FrameApply $x $y $z $P]]
         list $Pw [::fivax::motion::FrameApply $x $y $z $t]
@@ -307,7 +312,7 @@ oo::class create ::fivax::motion::Planner {
             set isFeed [expr {$kind eq "feed"}]
             set ok {}
             foreach {b1 b2 bl} $cands {
-                if {[::fivax::motion::Cost $ms1 $ms2 $isFeed $a1 $a2 $al $b1 $b2 $bl] < $S(retractCost)} {
+                if {!$isFeed || [::fivax::motion::Continues $ms1 $ms2 $a1 $a2 $al $b1 $b2 $bl]} {
                     lappend ok $b1 $b2 $bl
                 }
             }
@@ -354,7 +359,14 @@ oo::class create ::fivax::motion::Planner {
                     + $zeroCost * (abs($b1) + abs($b2))}] -1
             }
         } else {
-            set states [my Relax $prev $cands [expr {$kind eq "feed"}] $t $src]
+            if {[llength $cands] == 3 && [llength $prev] == 5 && $S(on-limit) ne "error"} {
+                # one candidate reached from one state, a retract allowed
+                # (see Relax): that state is its predecessor, its
+                # normalised cost 0
+                set states [list {*}$cands 0.0 0]
+            } else {
+                set states [my Relax $prev $cands [expr {$kind eq "feed"}] $t $src]
+            }
             if {$fresh} {
                 set i 3
                 foreach {b1 b2 - c -} $states {
@@ -369,8 +381,10 @@ oo::class create ::fivax::motion::Planner {
     }
 
     # Returns the states (see AddWork) of the candidate triples cands reached
-    # from the states prev by a move of the given kind (isFeed 1: cutting).
-    # With -on-limit error, moves needing a retract are excluded and a
+    # from the states prev by a move of the given kind (isFeed 1: cutting),
+    # the cost of a move being its weighted travel plus retractCost when a
+    # cutting move cannot go continuously (see Continues). With -on-limit
+    # error, moves needing a retract are excluded and a
     # layer left unreachable raises {FIVAX MOTION LIMIT} naming src. States
     # equal mod 360 deg on unlimited continuous axes have the same future;
     # only the cheaper is kept.
@@ -387,7 +401,12 @@ oo::class create ::fivax::motion::Planner {
             set arg -1
             set i 0
             foreach {a1 a2 al ac -} $prev {
-                set c [::fivax::motion::Cost $ms1 $ms2 $isFeed $a1 $a2 $al $b1 $b2 $bl $w1 $w2]
+                # (as abs(), see Continues)
+                set c [expr {$w1 * ($b1 > $a1 ? $b1 - $a1 : $a1 - $b1)
+                    + $w2 * ($b2 > $a2 ? $b2 - $a2 : $a2 - $b2)}]
+                if {$isFeed && ![::fivax::motion::Continues $ms1 $ms2 $a1 $a2 $al $b1 $b2 $bl]} {
+                    set c [expr {$c + $S(retractCost)}]
+                }
                 if {!($err && $c >= $S(retractCost)) && $ac + $c < $best} {
                     set best [expr {$ac + $c}]
                     set arg $i
@@ -428,17 +447,15 @@ oo::class create ::fivax::motion::Planner {
             set forced [expr {$m < $n / 2 - 1}]
         }
         set moves {}
-        set azimuths [my Departures $path $k]
-        set j 0
-        foreach layer [lrange $S(buf) 0 [expr {$k - 1}]] i [lrange $path 0 [expr {$k - 1}]] {
+        foreach layer [lrange $S(buf) 0 [expr {$k - 1}]] i [lrange $path 0 [expr {$k - 1}]] \
+                az [my Departures $path $k] {
             lassign $layer kind P t feed src states cone
             lassign [lrange $states [expr {5 * $i}] [expr {5 * $i + 2}]] q1 q2 lab
-            if {[dict exists $azimuths $j]} {
-                set q2 [dict get $azimuths $j]
+            if {$az ne ""} {
+                set q2 $az
                 set q1 [::fivax::motion::HoldTilt $S(ctx) $t $q1 $q2]
             }
             lappend moves {*}[my Emit $kind $P $t $feed $src $cone $q1 $q2 $lab]
-            incr j
         }
         set S(buf) [lrange $S(buf) $k end]
         if {$forced} {
@@ -448,7 +465,8 @@ oo::class create ::fivax::motion::Planner {
         return $moves
     }
 
-    # Returns the azimuths (layer index -> q2) that the approach sets:
+    # Returns the azimuths of layers 0 .. k-1 that the approach sets (q2,
+    # "" where the path's own stays):
     # where a rapid reaches the singular cone (the azimuth free there) and
     # the path then leaves the cone, the rapid and the cone points after it
     # take the azimuth the path leaves with (Departure: its limit at the
@@ -458,26 +476,29 @@ oo::class create ::fivax::motion::Planner {
     # stays within the limits at that azimuth.
     method Departures {path k} {
         set ctx $S(ctx)
-        set out [dict create]
+        set out [lrepeat $k ""]
         set n [llength $path]
-        for {set j 0} {$j < $k} {incr j} {
-            if {[lindex $S(buf) $j 0] ne "rapid" || ![lindex $S(buf) $j 6]} continue
+        # (the held rapids, and after a run the first layer past it)
+        set next 0
+        foreach j [lsearch -all -exact -index 0 $S(buf) rapid] {
+            if {$j >= $k} break
+            if {$j < $next || ![lindex $S(buf) $j 6]} continue
             set e $j
             while {$e < $n && [lindex $S(buf) $e 6]} {incr e}
             if {$e >= $n} break
             # the azimuth the path leaves the cone with (as Split sees it)
-            set q2 [::fivax::motion::Quantize [dict get $ctx step] [::fivax::motion::Departure $ctx \
-                [my PathRecord $path [expr {$e - 1}]] [my PathRecord $path $e] \
-                [lindex $S(buf) $e 4]]]
+            set q2 [lindex [::fivax::motion::Quantize [dict get $ctx step] \
+                [::fivax::motion::Departure $ctx [my PathRecord $path [expr {$e - 1}]] \
+                [my PathRecord $path $e] [lindex $S(buf) $e 4]]] 0]
             set ok 1
             for {set i $j} {$i < $e} {incr i} {
                 set q1 [lindex $S(buf) $i 5 [expr {5 * [lindex $path $i]}]]
                 if {[::fivax::motion::HoldTilt $ctx [lindex $S(buf) $i 2] $q1 $q2] eq ""} {set ok 0}
             }
             if {$ok && $e < $k} {
-                for {set i $j} {$i < $e} {incr i} {dict set out $i $q2}
+                for {set i $j} {$i < $e} {incr i} {lset out $i $q2}
             }
-            set j [expr {$e - 1}]
+            set next $e
         }
         return $out
     }
@@ -550,9 +571,8 @@ proc ::fivax::motion::BestState {states} {
 #	in state index last of the last layer.
 proc ::fivax::motion::Trace {buf last} {
     set path [list $last]
-    for {set j [expr {[llength $buf] - 1}]} {$j > 0} {incr j -1} {
-        set last [lindex $buf $j 5 [expr {5 * $last + 4}]]
-        lappend path $last
+    foreach layer [lreverse [lrange $buf 1 end]] {
+        lappend path [set last [lindex $layer 5 [expr {5 * $last + 4}]]]
     }
     lreverse $path
 }
