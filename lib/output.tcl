@@ -653,33 +653,11 @@ oo::class create ::fivax::output::Writer {
             if {!$inverse && $S(feedMode) eq "inverse"} {$S(nc) force once F}
             set S(feedMode) [expr {$inverse ? "inverse" : "direct"}]
         }
-        lappend words {*}[my AxisWords $rec]
+        lappend words {*}[::fivax::output::AxisWords $rec $S(xyzAddr) $S(rotAddr)]
         if {$isFeed} {
             lappend words [expr {$inverse ? "F_inv" : "F"}] [dict get $rec rate]
         }
         lappend lines [$S(nc) block $words]
-    }
-
-    # Returns the address words of the axes in rec's write list, by the
-    # dialect's addresses (S(xyzAddr), S(rotAddr)).
-    method AxisWords {rec} {
-        set write [dict get $rec write]
-        set axes [dict get $rec axes]
-        set words {}
-        foreach {name addr} $S(xyzAddr) {
-            if {$name in $write} {lappend words $addr [dict get $axes $name]}
-        }
-        foreach {name addr step} $S(rotAddr) {
-            if {$name ni $write} continue
-            set deg [::fivax::num::deg [dict get $axes $name]]
-            if {$step ne ""} {
-                # wrap the written value (rounded first, so 359.9996 is 0.000)
-                set deg [expr {round($deg / $step) * $step}]
-                set deg [expr {fmod(fmod($deg, 360.0) + 360.0, 360.0)}]
-            }
-            lappend words $addr $deg
-        }
-        return $words
     }
 
     # Returns the Klartext L block of a move record: the changed axes,
@@ -688,7 +666,7 @@ oo::class create ::fivax::output::Writer {
     method KlartextMove {rec isFeed} {
         set lines {}
         if {$S(pendingTool) ne ""} {set lines [my ToolCall]}
-        set words [my AxisWords $rec]
+        set words [::fivax::output::AxisWords $rec $S(xyzAddr) $S(rotAddr)]
         if {$isFeed} {
             if {$S(feedMode) ne "feed"} {$S(nc) force once KF}
             set S(feedMode) feed
@@ -705,7 +683,7 @@ oo::class create ::fivax::output::Writer {
     method Klartext {words tail} {
         set text [$S(nc) block $words 0]
         if {$text eq ""} {return {}}
-        $S(nc) line "L $text $tail"
+        $S(nc) block [list "" "L $text $tail"]
     }
 
     # Returns the Klartext line "L M.." of the M words (through the modal
@@ -759,7 +737,7 @@ oo::class create ::fivax::output::Writer {
             $S(nc) force once F
             set S(feedMode) direct
         }
-        lappend words {*}[my AxisWords $rec]
+        lappend words {*}[::fivax::output::AxisWords $rec $S(xyzAddr) $S(rotAddr)]
         set start [lmap v [list $sx $sy $sz] {::fivax::num::fixed $v $d}]
         set radius [expr {[dict get $S(cfg) -arc-words] eq "r" ? [my ArcRadius $rec $start] : ""}]
         if {$radius ne ""} {
@@ -883,4 +861,30 @@ oo::class create ::fivax::output::Writer {
         }
         return $text
     }
+}
+
+# ::fivax::output::AxisWords --
+#	Returns the address words of the axes in move record rec's write
+#	list, by a Writer's addresses xyzAddr {X addr Y addr Z addr} and
+#	rotAddr {name addr step ...} (see the Writer's state): X Y Z as they
+#	are, the rotaries in degrees, one that rolls over (step not "")
+#	rounded to step and wrapped into [0, 360).
+proc ::fivax::output::AxisWords {rec xyzAddr rotAddr} {
+    set write [dict get $rec write]
+    set axes [dict get $rec axes]
+    set words {}
+    foreach {name addr} $xyzAddr {
+        if {$name in $write} {lappend words $addr [dict get $axes $name]}
+    }
+    foreach {name addr step} $rotAddr {
+        if {$name ni $write} continue
+        set deg [::fivax::num::deg [dict get $axes $name]]
+        if {$step ne ""} {
+            # wrap the written value (rounded first, so 359.9996 is 0.000)
+            set deg [expr {round($deg / $step) * $step}]
+            set deg [expr {fmod(fmod($deg, 360.0) + 360.0, 360.0)}]
+        }
+        lappend words $addr $deg
+    }
+    return $words
 }
