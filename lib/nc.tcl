@@ -183,14 +183,16 @@ oo::class create ::fivax::nc::Writer {
     # order, prefixed with N<seq> when numbering is on and numbered is 1
     # (numbered 0: the words of a line built around them, never numbered);
     # "" when every word was left out (unchanged modal word, suppressed,
-    # or empty value). Only words written update the modal memory (after
+    # or empty value). around {before after}: text around the words,
+    # within the number (Klartext's "L <words> R0 F.."), when there are
+    # any. Only words written update the modal memory (after
     # the last word: a block that fails changes none of it). The empty
     # name "" stands for literal text, written as it is every time.
     # Numbering: N<seq> first while numbering is on and the number within
     # -seq-max (then the number advances); past -seq-max numbering stops
     # with one warning: never a repeated N.
     # Errors: {FIVAX NC ADDRESS} for an undefined address name.
-    method block {words {numbered 1}} {
+    method block {words {numbered 1} {around {}}} {
         set out {}
         set upd {}
         set S(once) {}
@@ -251,10 +253,12 @@ oo::class create ::fivax::nc::Writer {
         array set Mem $upd
         if {[llength $S(once)]} {my ConsumeOnce}
         if {![llength $out]} {return ""}
-        if {!$numbered || !$S(seqOn)} {return [join $out $S(sep)]$S(eol)}
+        set out [join $out $S(sep)]
+        if {[llength $around]} {set out [lindex $around 0]$out[lindex $around 1]}
+        if {!$numbered || !$S(seqOn)} {return $out$S(eol)}
         if {$S(seqNext) > $S(seqMax)} {
             my StopNumbering
-            return [join $out $S(sep)]$S(eol)
+            return $out$S(eol)
         }
         lassign $Addr(N) - kind spec leader trailer
         if {$kind eq "d"} {
@@ -263,7 +267,7 @@ oo::class create ::fivax::nc::Writer {
             set t [::fivax::nc::format [lindex $Addr(N) 8] $S(seqNext)]
         }
         incr S(seqNext) $S(seqIncr)
-        return $leader$t$trailer$S(sep)[join $out $S(sep)]$S(eol)
+        return $leader$t$trailer$S(sep)$out$S(eol)
     }
 
     # Returns text as one block, prefixed with N<seq> when numbering is on.

@@ -411,7 +411,7 @@ oo::class create ::fivax::output::Writer {
             }
             M91 {
                 $S(nc) force once KZ
-                lappend lines [my Klartext [list KZ $z] "R0 FMAX M91"]
+                lappend lines [$S(nc) block [list KZ $z] 1 {"L " " R0 FMAX M91"}]
             }
         }
         $S(nc) reset [expr {$S(klartext) ? "KZ" : "Z"}]
@@ -675,15 +675,7 @@ oo::class create ::fivax::output::Writer {
             set S(feedMode) rapid
             set tail "R0 FMAX"
         }
-        lappend lines [my Klartext $words [string trimright $tail]]
-    }
-
-    # Returns the numbered Klartext line "L <words> tail" (the words
-    # through the modal memory; nothing when no axis changes).
-    method Klartext {words tail} {
-        set text [$S(nc) block $words 0]
-        if {$text eq ""} {return {}}
-        $S(nc) block [list "" "L $text $tail"]
+        lappend lines [$S(nc) block $words 1 [list "L " " [string trimright $tail]"]]
     }
 
     # Returns the Klartext line "L M.." of the M words (through the modal
@@ -830,7 +822,7 @@ oo::class create ::fivax::output::Writer {
         if {[dict get $S(machine) home_rotaries]} {
             if {$S(klartext)} {
                 $S(nc) force once {K4 K5}
-                lappend lines [my Klartext {K4 0.0 K5 0.0} "R0 FMAX"]
+                lappend lines [$S(nc) block {K4 0.0 K5 0.0} 1 {"L " " R0 FMAX"}]
             } else {
                 $S(nc) force once {G_motion fourth_axis fifth_axis}
                 lappend lines [$S(nc) block {G_motion 0 fourth_axis 0.0 fifth_axis 0.0}]
