@@ -632,7 +632,21 @@ oo::class create ::fivax::output::Writer {
         set isFeed [expr {$kind eq "feed"}]
         if {$S(tcpArmed)} {lappend lines {*}[my TcpOn $write]}
         if {$S(klartext)} {
-            return [concat $lines [my KlartextMove $rec $isFeed]]
+            # L with the changed axes, R0, and FMAX or F (mm/min; a feed
+            # block after a rapid states F again); the waiting TOOL CALL
+            # first
+            if {$S(pendingTool) ne ""} {lappend lines {*}[my ToolCall]}
+            set words [::fivax::output::AxisWords $rec $S(xyzAddr) $S(rotAddr)]
+            if {$isFeed} {
+                if {$S(feedMode) ne "feed"} {$S(nc) force once KF}
+                set S(feedMode) feed
+                set tail [string trimright "R0 [$S(nc) block [list KF [dict get $rec rate]] 0]"]
+            } else {
+                set S(feedMode) rapid
+                set tail "R0 FMAX"
+            }
+            lappend lines [$S(nc) block $words 1 [list "L " " $tail"]]
+            return $lines
         }
         set words [list G_motion $isFeed]
         if {$S(tcpArmed) && $S(tcpInBlock)
@@ -647,35 +661,20 @@ oo::class create ::fivax::output::Writer {
             set S(length) 0
         }
         if {$isFeed} {
-            set mode [dict get $rec mode]
-            set inverse [expr {$mode eq "inverse"}]
-            lappend words G_feed [expr {$inverse ? 93 : 94}]
-            if {!$inverse && $S(feedMode) eq "inverse"} {$S(nc) force once F}
-            set S(feedMode) [expr {$inverse ? "inverse" : "direct"}]
+            if {[dict get $rec mode] eq "inverse"} {
+                lappend words G_feed 93
+                set S(feedMode) inverse
+                set feed F_inv
+            } else {
+                lappend words G_feed 94
+                if {$S(feedMode) eq "inverse"} {$S(nc) force once F}
+                set S(feedMode) direct
+                set feed F
+            }
         }
         lappend words {*}[::fivax::output::AxisWords $rec $S(xyzAddr) $S(rotAddr)]
-        if {$isFeed} {
-            lappend words [expr {$inverse ? "F_inv" : "F"}] [dict get $rec rate]
-        }
+        if {$isFeed} {lappend words $feed [dict get $rec rate]}
         lappend lines [$S(nc) block $words]
-    }
-
-    # Returns the Klartext L block of a move record: the changed axes,
-    # R0, and FMAX or F (the feed in mm/min; a feed block after a rapid
-    # states F again). The waiting TOOL CALL comes first.
-    method KlartextMove {rec isFeed} {
-        set lines {}
-        if {$S(pendingTool) ne ""} {set lines [my ToolCall]}
-        set words [::fivax::output::AxisWords $rec $S(xyzAddr) $S(rotAddr)]
-        if {$isFeed} {
-            if {$S(feedMode) ne "feed"} {$S(nc) force once KF}
-            set S(feedMode) feed
-            set tail "R0 [$S(nc) block [list KF [dict get $rec rate]] 0]"
-        } else {
-            set S(feedMode) rapid
-            set tail "R0 FMAX"
-        }
-        lappend lines [$S(nc) block $words 1 [list "L " " [string trimright $tail]"]]
     }
 
     # Returns the Klartext line "L M.." of the M words (through the modal
