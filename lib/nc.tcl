@@ -261,7 +261,10 @@ oo::class create ::fivax::nc::Writer {
             return $out$S(eol)
         }
         lassign $Addr(N) - kind spec leader trailer
-        if {$kind eq "d"} {
+        if {$spec eq "%d"} {
+            # (the number is a decimal integer within 64 bits: as %d writes it)
+            set t $S(seqNext)
+        } elseif {$kind eq "d"} {
             set t [::format $spec $S(seqNext)]
         } else {
             set t [::fivax::nc::format [lindex $Addr(N) 8] $S(seqNext)]
