@@ -869,7 +869,8 @@ proc ::fivax::output::AxisWords {rec xyzAddr rotAddr} {
     }
     foreach {name addr step} $rotAddr {
         if {$name ni $write} continue
-        set deg [::fivax::num::deg [dict get $axes $name]]
+        # (::fivax::num::deg's product, inline on the per-point path)
+        set deg [expr {[dict get $axes $name] * 180.0 / 3.141592653589793}]
         if {$step ne ""} {
             # wrap the written value (rounded first, so 359.9996 is 0.000)
             set deg [expr {round($deg / $step) * $step}]
