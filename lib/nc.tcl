@@ -185,9 +185,9 @@ oo::class create ::fivax::nc::Writer {
     # "" when every word was left out (unchanged modal word, suppressed,
     # or empty value). around {before after}: text around the words,
     # within the number (Klartext's "L <words> R0 F.."), when there are
-    # any. Only words written update the modal memory (after
-    # the last word: a block that fails changes none of it). The empty
-    # name "" stands for literal text, written as it is every time.
+    # any. Only words written update the modal memory, after the last
+    # word: a block that fails changes none of it. The empty name ""
+    # stands for literal text, written as it is every time.
     # Numbering: N<seq> first while numbering is on and the number within
     # -seq-max (then the number advances); past -seq-max numbering stops
     # with one warning: never a repeated N.
