@@ -11,10 +11,12 @@
 #	    mode  m = modal (written when its text changes), w = always written,
 #	          s = suppressed, W = forced once, S = suppressed once;
 #	    kind  f = printf real, F = printf real with a + flag, d = printf
-#	          integer (value rounded), s = string, a = NX &abcdef code;
+#	          integer (value rounded), s = string, a = NX &abcdef code,
+#	          t = literal text (the nameless address);
 #	    spec  the printf string, or the parsed &abcdef fields;
-#	    lo hi the bounds of limits as numbers, -Inf and Inf where there
-#	          is none, so a block tests a value with two comparisons;
+#	    lo hi the bounds of limits as numbers, the largest finite
+#	          doubles where there is none, so one test (x >= lo && x <=
+#	          hi) passes every finite value within them, and no Inf or NaN;
 #	    limits {} or {min minAction max maxAction} (NX's MIN/MAX with
 #	          abort, warning or truncate; "" for no bound);
 #	    format the format string as given (printf or &abcdef).
@@ -58,14 +60,15 @@ proc ::fivax::nc::create {args} {
 }
 
 oo::class create ::fivax::nc::Writer {
-    # Addr($name), Flags($name), Last($name) (text of the last word
-    # written), Val($name) (its value); the rest in S (few declared
+    # Addr($name), Flags($name), Mem($name) (the modal memory: {text
+    # value} of the last word written); the rest in S (few declared
     # variables: TclOO resolves every local of a method against each
     # declared name on every call): S(cfg) the option dict, S(names) the
     # address names in definition order; S(sep), S(eol), S(seqOn),
     # S(seqNext), S(seqIncr), S(seqMax): the options and the numbering
-    # state, out of S(cfg) for the hot path.
-    variable S Addr Flags Last Val
+    # state, out of S(cfg) for the hot path; S(once): the addresses whose
+    # once request the block being built uses.
+    variable S Addr Flags Mem
 
     constructor {opts} {
         set S(cfg) $opts
@@ -73,10 +76,9 @@ oo::class create ::fivax::nc::Writer {
         array set Addr {}
         my Apply $S(cfg)
         # The nameless address: literal text (template "strings"), always written.
-        set Addr() {w s {} {} {} -Inf Inf {}}
+        set Addr() {w t {} {} {} -1.7976931348623157e308 1.7976931348623157e308 {}}
         set Flags() {always 0 0 {}}
-        set Last() ""
-        set Val() ""
+        set Mem() {{} {}}
         my address N -leader N -format %d -force always
     }
 
@@ -121,8 +123,7 @@ oo::class create ::fivax::nc::Writer {
             set limits {}
             set fmt %s
             lassign {off 0 0 {}} base fa sa once
-            set Last($name) ""
-            set Val($name) ""
+            set Mem($name) {{} {}}
             lappend S(names) $name
         }
         foreach {opt v} $args {
@@ -145,8 +146,8 @@ oo::class create ::fivax::nc::Writer {
         }
         lassign [::fivax::nc::ParseFormat $fmt] kind spec
         lassign $limits lo - hi
-        if {$lo eq ""} {set lo -Inf}
-        if {$hi eq ""} {set hi Inf}
+        if {$lo eq ""} {set lo -1.7976931348623157e308}
+        if {$hi eq ""} {set hi 1.7976931348623157e308}
         set Flags($name) [list $base $fa $sa $once]
         set Addr($name) [list [::fivax::nc::Mode $base $fa $sa $once] $kind $spec $leader \
             $trailer $lo $hi $limits $fmt]
@@ -182,13 +183,19 @@ oo::class create ::fivax::nc::Writer {
     # order, prefixed with N<seq> when numbering is on and numbered is 1
     # (numbered 0: the words of a line built around them, never numbered);
     # "" when every word was left out (unchanged modal word, suppressed,
-    # or empty value). Only words written update the modal memory. The
-    # empty name "" stands for literal text, written as it is every time.
+    # or empty value). around {before after}: text around the words,
+    # within the number (Klartext's "L <words> R0 F.."), when there are
+    # any. Only words written update the modal memory, after the last
+    # word: a block that fails changes none of it. The empty name ""
+    # stands for literal text, written as it is every time.
+    # Numbering: N<seq> first while numbering is on and the number within
+    # -seq-max (then the number advances); past -seq-max numbering stops
+    # with one warning: never a repeated N.
     # Errors: {FIVAX NC ADDRESS} for an undefined address name.
-    method block {words {numbered 1}} {
+    method block {words {numbered 1} {around {}}} {
         set out {}
         set upd {}
-        set once {}
+        set S(once) {}
         foreach {name v} $words {
             if {![info exists Addr($name)]} {
                 ::fivax::Fail NC ADDRESS "unknown address \"$name\""
@@ -196,30 +203,37 @@ oo::class create ::fivax::nc::Writer {
             lassign $Addr($name) mode kind spec leader trailer lo hi
             switch -- $mode {
                 s continue
-                S {lappend once $name; continue}
+                S {lappend S(once) $name; continue}
             }
             # Number in, decimal: Tcl reads "017" as octal, so integers and
             # strings go through scan; plain doubles are used as they are
-            # (x is v itself, or what scan read).
+            # (x is v itself, or what scan read: a second conversion, the
+            # junk after the number, makes the count 2).
             if {$kind eq "s"} {
                 set t $v
                 if {[string match -* $t] && [string is double -strict $t] && $t == 0} {
                     set t [string range $t 1 end]
                 }
+            } elseif {$kind eq "t"} {
+                set t $v
             } elseif {[string is double -strict [set x $v]] && ![string is entier -strict $v]
-                    || [scan $v %lf%c x junk] == 1} {
-                if {$x < $lo || $x > $hi} {set x [my Bound $name $x]}
-                if {!($x > -Inf && $x < Inf)} {
-                    ::fivax::Fail NC VALUE "address $name: value is not finite: $v"
-                } elseif {$kind eq "d"} {
-                    set t [::format $spec [expr {round($x)}]]
-                } elseif {$kind eq "a"} {
-                    set t [::fivax::nc::Amp $spec $x]
-                } else {
-                    # printf reals, never -0
-                    set t [::format $spec $x]
-                    if {[string match -* $t] && ![string match {*[1-9]*} $t]} {
-                        set t [expr {$kind eq "F" ? "+" : ""}][string range $t 1 end]
+                    || [scan $v %lf%c x x] == 1} {
+                if {!($x >= $lo && $x <= $hi)} {
+                    # beyond a MIN/MAX, or not finite
+                    set x [my Bound $name $x]
+                    if {!($x > -Inf && $x < Inf)} {
+                        ::fivax::Fail NC VALUE "address $name: value is not finite: $v"
+                    }
+                }
+                switch -- $kind {
+                    d {set t [::format $spec [expr {round($x)}]]}
+                    a {set t [::fivax::nc::Amp $spec $x]}
+                    default {
+                        # printf reals, never -0
+                        set t [::format $spec $x]
+                        if {[string match -* $t] && ![string match {*[1-9]*} $t]} {
+                            set t [expr {$kind eq "F" ? "+" : ""}][string range $t 1 end]
+                        }
                     }
                 }
             } elseif {$v eq ""} {
@@ -229,26 +243,39 @@ oo::class create ::fivax::nc::Writer {
                 set t $v
             }
             if {$mode eq "m"} {
-                if {$t eq $Last($name)} continue
+                if {$t eq [lindex $Mem($name) 0]} continue
             } elseif {$mode eq "W"} {
-                lappend once $name
+                lappend S(once) $name
             }
             lappend out $leader$t$trailer
-            lappend upd $name $t $v
+            lappend upd $name [list $t $v]
         }
-        foreach {name t v} $upd {
-            set Last($name) $t
-            set Val($name) $v
-        }
-        if {[llength $once]} {my ConsumeOnce $once}
+        array set Mem $upd
+        if {[llength $S(once)]} {my ConsumeOnce}
         if {![llength $out]} {return ""}
-        if {!$numbered} {return [join $out $S(sep)]$S(eol)}
-        my Numbered [join $out $S(sep)]
+        set out [join $out $S(sep)]
+        if {[llength $around]} {set out [lindex $around 0]$out[lindex $around 1]}
+        if {!$numbered || !$S(seqOn)} {return $out$S(eol)}
+        if {$S(seqNext) > $S(seqMax)} {
+            my StopNumbering
+            return $out$S(eol)
+        }
+        lassign $Addr(N) - kind spec leader trailer
+        if {$spec eq "%d"} {
+            # (the number is a decimal integer within 64 bits: as %d writes it)
+            set t $S(seqNext)
+        } elseif {$kind eq "d"} {
+            set t [::format $spec $S(seqNext)]
+        } else {
+            set t [::fivax::nc::format [lindex $Addr(N) 8] $S(seqNext)]
+        }
+        incr S(seqNext) $S(seqIncr)
+        return $leader$t$trailer$S(sep)$out$S(eol)
     }
 
     # Returns text as one block, prefixed with N<seq> when numbering is on.
     method line {text} {
-        my Numbered $text
+        my block [list "" $text]
     }
 
     # Forces the named addresses out (once, always) whatever their
@@ -292,16 +319,16 @@ oo::class create ::fivax::nc::Writer {
             ::fivax::Fail NC ADDRESS "unknown address \"$name\""
         }
         lassign $Addr($name) - - - - - lo hi
-        if {$x < $lo || $x > $hi} {return [my Bound $name $x]}
+        if {!($x >= $lo && $x <= $hi)} {return [my Bound $name $x]}
         return $x
     }
 
     # Returns the last value written for address name ("" if none).
     method value {name} {
-        if {![info exists Val($name)]} {
+        if {![info exists Mem($name)]} {
             ::fivax::Fail NC ADDRESS "unknown address \"$name\""
         }
-        return $Val($name)
+        lindex $Mem($name) 1
     }
 
     # Forgets the modal memory of all addresses, or of the named ones, so
@@ -309,30 +336,31 @@ oo::class create ::fivax::nc::Writer {
     method reset {{which *}} {
         if {$which eq "*"} {set which $S(names)}
         foreach name $which {
-            if {![info exists Last($name)]} {
+            if {![info exists Mem($name)]} {
                 ::fivax::Fail NC ADDRESS "unknown address \"$name\""
             }
         }
         foreach name $which {
-            set Last($name) ""
-            set Val($name) ""
+            set Mem($name) {{} {}}
         }
         return
     }
 
-    # Returns x, which lies below address name's lo or above its hi (the
-    # callers test that), as its limits {min minAction max maxAction}
-    # say: truncated to the bound, or as it is after a warning, or an
-    # error {FIVAX NC RANGE} for abort.
+    # Returns x as address name's limits {min minAction max maxAction}
+    # say: as it is within them (or when it is NaN), else truncated to the
+    # bound, or as it is after a warning, or an error {FIVAX NC RANGE} for
+    # abort. (The callers call it for x outside the address's lo..hi.)
     method Bound {name x} {
-        lassign $Addr($name) - - - - - lo - limits
+        lassign $Addr($name) - - - - - - - limits
         lassign $limits min minAct max maxAct
-        if {$x < $lo} {
+        if {$min ne "" && $x < $min} {
             set bound $min
             set act $minAct
-        } else {
+        } elseif {$max ne "" && $x > $max} {
             set bound $max
             set act $maxAct
+        } else {
+            return $x
         }
         switch -- $act {
             abort {
@@ -361,33 +389,19 @@ oo::class create ::fivax::nc::Writer {
         }
     }
 
-    # Returns text as a block: N<seq> first while numbering is on and the
-    # number within -seq-max (then the number advances); past -seq-max
-    # numbering stops with one warning: never a repeated N.
-    method Numbered {text} {
-        if {!$S(seqOn)} {return $text$S(eol)}
-        if {$S(seqNext) > $S(seqMax)} {
-            set S(seqOn) 0
-            set warn [dict get $S(cfg) -warn]
-            if {[llength $warn]} {
-                {*}$warn "sequence numbers past [dict get $S(cfg) -seq-max] (the largest the\
-                    .def's SEQUENCE allows): the rest of the program is not numbered"
-            }
-            return $text$S(eol)
+    # Stops numbering past -seq-max, with a warning.
+    method StopNumbering {} {
+        set S(seqOn) 0
+        set warn [dict get $S(cfg) -warn]
+        if {[llength $warn]} {
+            {*}$warn "sequence numbers past [dict get $S(cfg) -seq-max] (the largest the\
+                .def's SEQUENCE allows): the rest of the program is not numbered"
         }
-        lassign $Addr(N) mode kind spec leader trailer
-        if {$kind eq "d"} {
-            set text $leader[::format $spec $S(seqNext)]$trailer$S(sep)$text$S(eol)
-        } else {
-            set text $leader[::fivax::nc::format [lindex $Addr(N) 8] $S(seqNext)]$trailer$S(sep)$text$S(eol)
-        }
-        incr S(seqNext) $S(seqIncr)
-        return $text
     }
 
-    # Clears the once requests of the addresses used by a block.
-    method ConsumeOnce {used} {
-        foreach name $used {
+    # Clears the once requests of the addresses used by a block (S(once)).
+    method ConsumeOnce {} {
+        foreach name $S(once) {
             lset Flags($name) 3 {}
             lset Addr($name) 0 [::fivax::nc::Mode {*}$Flags($name)]
         }

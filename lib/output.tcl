@@ -411,7 +411,7 @@ oo::class create ::fivax::output::Writer {
             }
             M91 {
                 $S(nc) force once KZ
-                lappend lines [my Klartext [list KZ $z] "R0 FMAX M91"]
+                lappend lines [$S(nc) block [list KZ $z] 1 {"L " " R0 FMAX M91"}]
             }
         }
         $S(nc) reset [expr {$S(klartext) ? "KZ" : "Z"}]
@@ -632,7 +632,21 @@ oo::class create ::fivax::output::Writer {
         set isFeed [expr {$kind eq "feed"}]
         if {$S(tcpArmed)} {lappend lines {*}[my TcpOn $write]}
         if {$S(klartext)} {
-            return [concat $lines [my KlartextMove $rec $isFeed]]
+            # L with the changed axes, R0, and FMAX or F (mm/min; a feed
+            # block after a rapid states F again); the waiting TOOL CALL
+            # first
+            if {$S(pendingTool) ne ""} {lappend lines {*}[my ToolCall]}
+            set words [::fivax::output::AxisWords $rec $S(xyzAddr) $S(rotAddr)]
+            if {$isFeed} {
+                if {$S(feedMode) ne "feed"} {$S(nc) force once KF}
+                set S(feedMode) feed
+                set tail [string trimright "R0 [$S(nc) block [list KF [dict get $rec rate]] 0]"]
+            } else {
+                set S(feedMode) rapid
+                set tail "R0 FMAX"
+            }
+            lappend lines [$S(nc) block $words 1 [list "L " " $tail"]]
+            return $lines
         }
         set words [list G_motion $isFeed]
         if {$S(tcpArmed) && $S(tcpInBlock)
@@ -647,65 +661,20 @@ oo::class create ::fivax::output::Writer {
             set S(length) 0
         }
         if {$isFeed} {
-            set mode [dict get $rec mode]
-            set inverse [expr {$mode eq "inverse"}]
-            lappend words G_feed [expr {$inverse ? 93 : 94}]
-            if {!$inverse && $S(feedMode) eq "inverse"} {$S(nc) force once F}
-            set S(feedMode) [expr {$inverse ? "inverse" : "direct"}]
-        }
-        lappend words {*}[my AxisWords $rec]
-        if {$isFeed} {
-            lappend words [expr {$inverse ? "F_inv" : "F"}] [dict get $rec rate]
-        }
-        lappend lines [$S(nc) block $words]
-    }
-
-    # Returns the address words of the axes in rec's write list, by the
-    # dialect's addresses (S(xyzAddr), S(rotAddr)).
-    method AxisWords {rec} {
-        set write [dict get $rec write]
-        set axes [dict get $rec axes]
-        set words {}
-        foreach {name addr} $S(xyzAddr) {
-            if {$name in $write} {lappend words $addr [dict get $axes $name]}
-        }
-        foreach {name addr step} $S(rotAddr) {
-            if {$name ni $write} continue
-            set deg [::fivax::num::deg [dict get $axes $name]]
-            if {$step ne ""} {
-                # wrap the written value (rounded first, so 359.9996 is 0.000)
-                set deg [expr {round($deg / $step) * $step}]
-                set deg [expr {fmod(fmod($deg, 360.0) + 360.0, 360.0)}]
+            if {[dict get $rec mode] eq "inverse"} {
+                lappend words G_feed 93
+                set S(feedMode) inverse
+                set feed F_inv
+            } else {
+                lappend words G_feed 94
+                if {$S(feedMode) eq "inverse"} {$S(nc) force once F}
+                set S(feedMode) direct
+                set feed F
             }
-            lappend words $addr $deg
         }
-        return $words
-    }
-
-    # Returns the Klartext L block of a move record: the changed axes,
-    # R0, and FMAX or F (the feed in mm/min; a feed block after a rapid
-    # states F again). The waiting TOOL CALL comes first.
-    method KlartextMove {rec isFeed} {
-        set lines {}
-        if {$S(pendingTool) ne ""} {set lines [my ToolCall]}
-        set words [my AxisWords $rec]
-        if {$isFeed} {
-            if {$S(feedMode) ne "feed"} {$S(nc) force once KF}
-            set S(feedMode) feed
-            set tail "R0 [$S(nc) block [list KF [dict get $rec rate]] 0]"
-        } else {
-            set S(feedMode) rapid
-            set tail "R0 FMAX"
-        }
-        lappend lines [my Klartext $words [string trimright $tail]]
-    }
-
-    # Returns the numbered Klartext line "L <words> tail" (the words
-    # through the modal memory; nothing when no axis changes).
-    method Klartext {words tail} {
-        set text [$S(nc) block $words 0]
-        if {$text eq ""} {return {}}
-        $S(nc) line "L $text $tail"
+        lappend words {*}[::fivax::output::AxisWords $rec $S(xyzAddr) $S(rotAddr)]
+        if {$isFeed} {lappend words $feed [dict get $rec rate]}
+        lappend lines [$S(nc) block $words]
     }
 
     # Returns the Klartext line "L M.." of the M words (through the modal
@@ -759,7 +728,7 @@ oo::class create ::fivax::output::Writer {
             $S(nc) force once F
             set S(feedMode) direct
         }
-        lappend words {*}[my AxisWords $rec]
+        lappend words {*}[::fivax::output::AxisWords $rec $S(xyzAddr) $S(rotAddr)]
         set start [lmap v [list $sx $sy $sz] {::fivax::num::fixed $v $d}]
         set radius [expr {[dict get $S(cfg) -arc-words] eq "r" ? [my ArcRadius $rec $start] : ""}]
         if {$radius ne ""} {
@@ -852,7 +821,7 @@ oo::class create ::fivax::output::Writer {
         if {[dict get $S(machine) home_rotaries]} {
             if {$S(klartext)} {
                 $S(nc) force once {K4 K5}
-                lappend lines [my Klartext {K4 0.0 K5 0.0} "R0 FMAX"]
+                lappend lines [$S(nc) block {K4 0.0 K5 0.0} 1 {"L " " R0 FMAX"}]
             } else {
                 $S(nc) force once {G_motion fourth_axis fifth_axis}
                 lappend lines [$S(nc) block {G_motion 0 fourth_axis 0.0 fifth_axis 0.0}]
@@ -883,4 +852,31 @@ oo::class create ::fivax::output::Writer {
         }
         return $text
     }
+}
+
+# ::fivax::output::AxisWords --
+#	Returns the address words of the axes in move record rec's write
+#	list, by a Writer's addresses xyzAddr {X addr Y addr Z addr} and
+#	rotAddr {name addr step ...} (see the Writer's state): X Y Z as they
+#	are, the rotaries in degrees, one that rolls over (step not "")
+#	rounded to step and wrapped into [0, 360).
+proc ::fivax::output::AxisWords {rec xyzAddr rotAddr} {
+    set write [dict get $rec write]
+    set axes [dict get $rec axes]
+    set words {}
+    foreach {name addr} $xyzAddr {
+        if {$name in $write} {lappend words $addr [dict get $axes $name]}
+    }
+    foreach {name addr step} $rotAddr {
+        if {$name ni $write} continue
+        # (::fivax::num::deg's product, inline on the per-point path)
+        set deg [expr {[dict get $axes $name] * 180.0 / 3.141592653589793}]
+        if {$step ne ""} {
+            # wrap the written value (rounded first, so 359.9996 is 0.000)
+            set deg [expr {round($deg / $step) * $step}]
+            set deg [expr {fmod(fmod($deg, 360.0) + 360.0, 360.0)}]
+        }
+        lappend words $addr $deg
+    }
+    return $words
 }
