@@ -66,8 +66,7 @@ oo::class create ::fivax::nc::Writer {
     # declared name on every call): S(cfg) the option dict, S(names) the
     # address names in definition order; S(sep), S(eol), S(seqOn),
     # S(seqNext), S(seqIncr), S(seqMax): the options and the numbering
-    # state, out of S(cfg) for the hot path; S(once): the addresses whose
-    # once request the block being built uses.
+    # state, out of S(cfg) for the hot path.
     variable S Addr Flags Mem
 
     constructor {opts} {
@@ -195,7 +194,7 @@ oo::class create ::fivax::nc::Writer {
     method block {words {numbered 1} {around {}}} {
         set out {}
         set upd {}
-        set S(once) {}
+        set once {}
         foreach {name v} $words {
             if {![info exists Addr($name)]} {
                 ::fivax::Fail NC ADDRESS "unknown address \"$name\""
@@ -203,7 +202,7 @@ oo::class create ::fivax::nc::Writer {
             lassign $Addr($name) mode kind spec leader trailer lo hi
             switch -- $mode {
                 s continue
-                S {lappend S(once) $name; continue}
+                S {lappend once $name; continue}
             }
             # Number in, decimal: Tcl reads "017" as octal, so integers and
             # strings go through scan; plain doubles are used as they are
@@ -245,13 +244,13 @@ oo::class create ::fivax::nc::Writer {
             if {$mode eq "m"} {
                 if {$t eq [lindex $Mem($name) 0]} continue
             } elseif {$mode eq "W"} {
-                lappend S(once) $name
+                lappend once $name
             }
             lappend out $leader$t$trailer
             lappend upd $name [list $t $v]
         }
         array set Mem $upd
-        if {[llength $S(once)]} {my ConsumeOnce}
+        if {[llength $once]} {my ConsumeOnce $once}
         if {![llength $out]} {return ""}
         set out [join $out $S(sep)]
         if {[llength $around]} {set out [lindex $around 0]$out[lindex $around 1]}
@@ -399,9 +398,9 @@ oo::class create ::fivax::nc::Writer {
         }
     }
 
-    # Clears the once requests of the addresses used by a block (S(once)).
-    method ConsumeOnce {} {
-        foreach name $S(once) {
+    # Clears the once requests of the addresses (names) used by a block.
+    method ConsumeOnce {names} {
+        foreach name $names {
             lset Flags($name) 3 {}
             lset Addr($name) 0 [::fivax::nc::Mode {*}$Flags($name)]
         }

@@ -861,6 +861,7 @@ oo::class create ::fivax::output::Writer {
 #	are, the rotaries in degrees, one that rolls over (step not "")
 #	rounded to step and wrapped into [0, 360).
 proc ::fivax::output::AxisWords {rec xyzAddr rotAddr} {
+    namespace upvar ::fivax::num pi pi
     set write [dict get $rec write]
     set axes [dict get $rec axes]
     set words {}
@@ -870,7 +871,7 @@ proc ::fivax::output::AxisWords {rec xyzAddr rotAddr} {
     foreach {name addr step} $rotAddr {
         if {$name ni $write} continue
         # (::fivax::num::deg's product, inline on the per-point path)
-        set deg [expr {[dict get $axes $name] * 180.0 / 3.141592653589793}]
+        set deg [expr {[dict get $axes $name] * 180.0 / $pi}]
         if {$step ne ""} {
             # wrap the written value (rounded first, so 359.9996 is 0.000)
             set deg [expr {round($deg / $step) * $step}]

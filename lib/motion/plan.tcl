@@ -359,14 +359,7 @@ oo::class create ::fivax::motion::Planner {
                     + $zeroCost * (abs($b1) + abs($b2))}] -1
             }
         } else {
-            if {[llength $cands] == 3 && [llength $prev] == 5 && $S(on-limit) ne "error"} {
-                # one candidate reached from one state, a retract allowed
-                # (see Relax): that state is its predecessor, its
-                # normalised cost 0
-                set states [list {*}$cands 0.0 0]
-            } else {
-                set states [my Relax $prev $cands [expr {$kind eq "feed"}] $t $src]
-            }
+            set states [my Relax $prev $cands [expr {$kind eq "feed"}] $t $src]
             if {$fresh} {
                 set i 3
                 foreach {b1 b2 - c -} $states {
@@ -389,6 +382,11 @@ oo::class create ::fivax::motion::Planner {
     # equal mod 360 deg on unlimited continuous axes have the same future;
     # only the cheaper is kept.
     method Relax {prev cands isFeed t src} {
+        if {[llength $cands] == 3 && [llength $prev] == 5 && $S(on-limit) ne "error"} {
+            # one candidate reached from one state, a retract allowed: that
+            # state is its predecessor, its normalised cost 0
+            return [list {*}$cands 0.0 0]
+        }
         set ms1 $S(ms1)
         set ms2 $S(ms2)
         set w1 $S(w1)
