@@ -169,7 +169,8 @@ oo::class create ::fivax::checkproc::Proxy {
 
 # ::fivax::checkproc::serve --
 #	The checker process: answers the messages read from channel in on
-#	channel out, until the end of in.
+#	channel out, until the end of in (a message cut off there is dropped)
+#	or until the post has gone.
 proc ::fivax::checkproc::serve {in out} {
     chan configure $in -translation lf -encoding utf-8 -buffersize 65536
     chan configure $out -translation lf -encoding utf-8
@@ -179,6 +180,9 @@ proc ::fivax::checkproc::serve {in out} {
         while {![info complete $text] && [gets $in more] >= 0} {
             append text \n $more
         }
+        # a message the end of the pipe cut off (the post stopped while
+        # writing it) is no block of the program
+        if {[chan eof $in]} break
         if {$failed} continue
         set clline ""
         set op ""
@@ -191,16 +195,21 @@ proc ::fivax::checkproc::serve {in out} {
                 tool {$checker setTool [lindex $text 1]}
                 new {set checker [::fivax::verify::create {*}[lrange $text 1 end]]}
                 summary {
-                    puts $out [list ok [$checker summary]]
-                    flush $out
+                    if {![Reply $out [list ok [$checker summary]]]} return
                 }
             }
         } on error {msg opts} {
             set failed 1
-            puts $out [list error [dict get $opts -errorcode] $msg $clline $op]
-            flush $out
+            if {![Reply $out [list error [dict get $opts -errorcode] $msg $clline $op]]} return
         }
     }
+}
+
+# ::fivax::checkproc::Reply --
+#	Writes message to the post on channel out; returns 0 when the post has
+#	gone (a closed pipe: nobody is left to tell), else 1.
+proc ::fivax::checkproc::Reply {out message} {
+    expr {![catch {puts $out $message; flush $out}]}
 }
 
 if {[info exists ::argv0] && [file normalize $::argv0] eq [file normalize [info script]]} {
