@@ -49,12 +49,15 @@ proc ::fivax::motion::Candidates {ctx t cone refs src} {
     set cone [expr {$status eq "singular" || $cone}]
     if {!$cone || ![llength $refs] || ![llength [set out [Held $ctx $t $refs]]]} {
         # the exact solutions (at most two), each axis value expanded to
-        # its in-limit aliases near refs; branch -1 for all where the
-        # branches merge, else the solution's index
+        # its in-limit aliases near refs (the azimuth's only where the
+        # tilt has some); branch -1 for all where the branches merge,
+        # else the solution's index
         lassign [dict get $ctx limits] lim1 lim2
         set out {}
-        foreach xs [Aliases $lim1 0 $sols $refs] ys [Aliases $lim2 1 $sols $refs] \
+        foreach xs [Aliases $lim1 0 $sols $refs] sol $sols \
                 lab [expr {$cone || [llength $sols] < 2 ? {-1 -1} : {0 1}}] {
+            if {![llength $xs]} continue
+            set ys [lindex [Aliases $lim2 1 [list $sol] $refs] 0]
             foreach x $xs {
                 foreach y $ys {lappend out $x $y $lab}
             }
