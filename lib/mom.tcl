@@ -46,20 +46,22 @@ namespace eval ::fivax::mom {
     # The body of the proc ::fivax::mom::runtime::Dispatch {ops} the
     # runtime defines in the post interpreter: what it does there, in one
     # crossing per batch of records (see Runtime Flush). ops is a flat list
-    # of operations {op name value}: v sets the variable name (a global,
-    # named with its :: by the runtime: no name to build here), a sets the
-    # global array name from the pairs value, p sets a position (see
-    # Runtime SetPosition: name is the previous {x y z i j k}, value the
-    # current one), e fires MOM_name (MOM_abort_event leaves the handler
-    # quietly). The event being fired is the variable event of that
-    # namespace (for MOM_ask_event_type).
-    # (The position arrays are linked by global once per batch, so that
-    # lassign sets local names; an error puts the event back by an
-    # on-error handler, which unlike finally costs nothing when there is
-    # none.)
+    # of operations {op name value}: v sets the variable name (a global:
+    # named with its :: by the runtime, no name to build here, or by its
+    # bare name one of those the proc links first, the globals of every
+    # motion), a sets the global array name from the pairs value, p sets a
+    # position (see Runtime SetPosition: name is the previous {x y z i j
+    # k}, value the current one), e fires MOM_name (MOM_abort_event leaves
+    # the handler quietly). The event being fired is the variable event of
+    # that namespace (for MOM_ask_event_type).
+    # (The globals of every motion are linked by global once per batch, so
+    # that set and lassign find local names; an error puts the event back
+    # by an on-error handler, which unlike finally costs nothing when
+    # there is none.)
     variable dispatch {
         variable event
-        global mom_prev_mcs_goto mom_prev_tool_axis mom_mcs_goto mom_tool_axis mom_pos
+        global mom_prev_mcs_goto mom_prev_tool_axis mom_mcs_goto mom_tool_axis mom_pos \
+            mom_cl_line mom_motion_type mom_programmed_feed_rate mom_feed_rate mom_motion_event
         set saved $event
         try {
             foreach {op name value} $ops {
@@ -403,15 +405,21 @@ oo::class create ::fivax::mom::Runtime {
     #	of one motion are ready together). Returns 1 if the post has the
     #	handler.
     method Fire {event {now 1}} {
-        # (Has answers once per name: its answer is read here without a call)
-        set key has:MOM_$event
-        set has [expr {[info exists S($key)] ? $S($key) : [my Has MOM_$event]}]
-        if {$has} {
+        set ops [my Fires $event]
+        if {[llength $ops]} {
             incr S(events)
-            lappend S(ops) e $event {}
+            lappend S(ops) {*}$ops
         }
         if {$now} {set S(ready) [llength $S(ops)]}
-        return $has
+        expr {[llength $ops] > 0}
+    }
+
+    # Fires --
+    #	Returns the operation that calls MOM_<event> (see Fire): none when
+    #	the post does not define it.
+    method Fires {event} {
+        if {![my Has MOM_$event]} {return {}}
+        list e $event {}
     }
 
     # Flush --
@@ -459,7 +467,7 @@ oo::class create ::fivax::mom::Runtime {
     # Record -- Maps one CLSF record to globals and events.
     method Record {rec} {
         set kind [dict get $rec kind]
-        lappend S(ops) v ::mom_cl_line [dict get $rec line]
+        lappend S(ops) v mom_cl_line [dict get $rec line]
         if {$S(headerPending) && $kind ni $::fivax::mom::headerKinds} {my FlushHeader}
         if {$S(scale) != 1.0} {set rec [my Scale $rec]}
         if {[llength $S(nurbs)] && $kind ni {KNOT CNTRL}} {my Nurbs}
@@ -715,8 +723,8 @@ oo::class create ::fivax::mom::Runtime {
         if {![info exists S(feed)]} {
             ::fivax::Fail MOM FEED "[::fivax::mom::Where $rec]: GOTO: feed move before any FEDRAT"
         }
-        lappend S(ops) v ::mom_motion_type CUT v ::mom_programmed_feed_rate $S(feed) \
-            v ::mom_feed_rate $S(feed)
+        lappend S(ops) v mom_motion_type CUT v mom_programmed_feed_rate $S(feed) \
+            v mom_feed_rate $S(feed)
     }
 
     # Move --
@@ -725,15 +733,34 @@ oo::class create ::fivax::mom::Runtime {
     #	after a tool change, else MOM_first_move, with mom_motion_event set
     #	to that name (as NX does, inferred from Post Builder's posts, which
     #	choose rapid or feed there from mom_programmed_feed_rate).
+    #	(The operations of a motion are the same each time, Has answering
+    #	once per name: MoveOps makes them at the first, S(move:...) keeps
+    #	them with the number of handlers among them.)
     method Move {event} {
-        lappend S(ops) v ::mom_motion_event $event
-        my Fire before_motion 0
+        set final $event
         if {$S(firstMove)} {
             set S(firstMove) 0
-            set event [expr {$S(toolChanged) ? "initial_move" : "first_move"}]
-            lappend S(ops) v ::mom_motion_event $event
+            set final [expr {$S(toolChanged) ? "initial_move" : "first_move"}]
         }
-        my Fire $event
+        set key move:$event,$final
+        if {![info exists S($key)]} {set S($key) [my MoveOps $event $final]}
+        lassign $S($key) ops handlers
+        lappend S(ops) {*}$ops
+        incr S(events) $handlers
+        set S(ready) [llength $S(ops)]
+    }
+
+    # MoveOps --
+    #	Returns the operations of a motion (see Move) whose event is event
+    #	and whose handler is MOM_<final>, and the number of handlers among
+    #	them.
+    method MoveOps {event final} {
+        set before [my Fires before_motion]
+        set handler [my Fires $final]
+        set ops [list v mom_motion_event $event {*}$before]
+        if {$final ne $event} {lappend ops v mom_motion_event $final}
+        lappend ops {*}$handler
+        list $ops [expr {([llength $before] + [llength $handler]) / 3}]
     }
 
     # SetPosition --
