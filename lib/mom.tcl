@@ -90,7 +90,7 @@ namespace eval ::fivax::mom {
     }
     # Waiting operations (elements of the ops list) past which a record
     # ends the batch: the runtime crosses into the post interpreter when
-    # about this many are waiting (a GOTO makes 25).
+    # about this many are waiting (a plain GOTO makes 21).
     variable batch 4000
     # MOM_* commands with behaviour (implemented by Cmd<name> below).
     variable commands {
