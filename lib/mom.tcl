@@ -45,19 +45,23 @@ namespace eval ::fivax::mom {
     }
     # The body of the proc ::fivax::mom::runtime::Dispatch {ops} the
     # runtime defines in the post interpreter: what it does there, in one
-    # crossing per record (see Runtime Flush). ops is a flat list of
-    # operations {op name value}: v sets the variable name (a global,
-    # named with its :: by the runtime: no name to build here), a sets the
-    # global array name from the pairs value, p sets a position (see
-    # Runtime SetPosition: name is the previous {x y z i j k}, value the
-    # current one), e fires MOM_name (MOM_abort_event leaves the handler
-    # quietly). The event being fired is the variable event of that
-    # namespace (for MOM_ask_event_type).
-    # (The position arrays are linked by global, so that lassign sets
-    # local names; an error puts the event back by an on-error handler,
-    # which unlike finally costs nothing when there is none.)
+    # crossing per batch of records (see Runtime Flush). ops is a flat list
+    # of operations {op name value}: v sets the variable name (a global:
+    # named with its :: by the runtime, no name to build here, or by its
+    # bare name one of those the proc links first, the globals of every
+    # motion), a sets the global array name from the pairs value, p sets a
+    # position (see Runtime SetPosition: name is the previous {x y z i j
+    # k}, value the current one), e fires MOM_name (MOM_abort_event leaves
+    # the handler quietly). The event being fired is the variable event of
+    # that namespace (for MOM_ask_event_type).
+    # (The globals of every motion are linked by global once per batch, so
+    # that set and lassign find local names; an error puts the event back
+    # by an on-error handler, which unlike finally costs nothing when
+    # there is none.)
     variable dispatch {
         variable event
+        global mom_prev_mcs_goto mom_prev_tool_axis mom_mcs_goto mom_tool_axis mom_pos \
+            mom_cl_line mom_motion_type mom_programmed_feed_rate mom_feed_rate mom_motion_event
         set saved $event
         try {
             foreach {op name value} $ops {
@@ -65,8 +69,6 @@ namespace eval ::fivax::mom {
                     v {set $name $value}
                     a {array set ::$name $value}
                     p {
-                        global mom_prev_mcs_goto mom_prev_tool_axis mom_mcs_goto mom_tool_axis \
-                            mom_pos
                         lassign $name mom_prev_mcs_goto(0) mom_prev_mcs_goto(1) \
                             mom_prev_mcs_goto(2) mom_prev_tool_axis(0) \
                             mom_prev_tool_axis(1) mom_prev_tool_axis(2)
@@ -86,6 +88,10 @@ namespace eval ::fivax::mom {
         }
         set event $saved
     }
+    # Waiting operations (elements of the ops list) past which a record
+    # ends the batch: the runtime crosses into the post interpreter when
+    # about this many are waiting (a plain GOTO makes 21).
+    variable batch 4000
     # MOM_* commands with behaviour (implemented by Cmd<name> below).
     variable commands {
         MOM_output_literal MOM_output_text MOM_do_template MOM_force
@@ -262,7 +268,7 @@ oo::class create ::fivax::mom::Runtime {
     constructor {opts} {
         dict for {opt value} $opts {set S([string range $opt 1 end]) $value}
         array set S {
-            ops {} records 0 blocks 0 warnings 0 events 0 pathOpen 0
+            ops {} ready 0 records 0 blocks 0 warnings 0 events 0 pathOpen 0
             headerPending 0 rapid 0 circle {} cycle {} axis {0.0 0.0 1.0}
             point {} tool {} toolKey {} prevToolKey {} toolChanged 0 firstMove 1
             toolNames {} msysPending 0 unknown {} udes {}
@@ -330,14 +336,21 @@ oo::class create ::fivax::mom::Runtime {
             set S(firstUnit) [::fivax::mom::FirstUnit $path]
             set reader [::fivax::clsf::open $path]
         }
+        set batch $::fivax::mom::batch
         try {
             my Start $path
             # (dict size: ne "" would make each record's string)
             while {[dict size [set rec [$reader next]]]} {
                 incr S(records)
                 my Record $rec
+                if {[llength $S(ops)] >= $batch} {my Flush}
             }
             my Finish
+            my Flush
+        } on error {msg opts} {
+            # what one crossing per record would have done before the error
+            my FlushReady
+            return -options $opts $msg
         } finally {
             $reader destroy
         }
@@ -386,29 +399,57 @@ oo::class create ::fivax::mom::Runtime {
     # Fire --
     #	Calls MOM_<event> in the post if the post defines it (as NX does),
     #	after the globals set before it; MOM_abort_event leaves the handler
-    #	quietly. With now 0 the call waits for the next Fire or Flush (the
-    #	handlers of one record run in one crossing). Returns 1 if the post
-    #	has the handler.
+    #	quietly. The call waits in the batch (see Flush); the operations up
+    #	to it are ready (S(ready): those a crossing per record would have
+    #	done by now), with now 0 they wait for the next Fire (the handlers
+    #	of one motion are ready together). Returns 1 if the post has the
+    #	handler.
     method Fire {event {now 1}} {
-        # (Has answers once per name: its answer is read here without a call)
-        set key has:MOM_$event
-        set has [expr {[info exists S($key)] ? $S($key) : [my Has MOM_$event]}]
-        if {$has} {
+        set ops [my Fires $event]
+        if {[llength $ops]} {
             incr S(events)
-            lappend S(ops) e $event {}
+            lappend S(ops) {*}$ops
         }
-        if {$now} {my Flush}
-        return $has
+        if {$now} {set S(ready) [llength $S(ops)]}
+        expr {[llength $ops] > 0}
+    }
+
+    # Fires --
+    #	Returns the operation that calls MOM_<event> (see Fire): none when
+    #	the post does not define it.
+    method Fires {event} {
+        if {![my Has MOM_$event]} {return {}}
+        list e $event {}
     }
 
     # Flush --
     #	Does the waiting operations (globals, arrays, handlers) in the post
-    #	interpreter, in order, in one call (see dispatch).
+    #	interpreter, in order, in one call (see dispatch). They wait in a
+    #	batch of records (see run) until the runtime reads the post
+    #	interpreter (Child, interp), reports a line (Listing) or stops on an
+    #	error, or the batch is full: the post sees the same globals at each
+    #	event and runs the same events in the same order as with a crossing
+    #	per record.
     method Flush {} {
         if {![llength $S(ops)]} return
         set ops $S(ops)
         set S(ops) {}
+        set S(ready) 0
         $S(interp) eval [list ::fivax::mom::runtime::Dispatch $ops]
+    }
+
+    # FlushReady --
+    #	Does the ready operations (see Fire) in the post interpreter; the
+    #	others keep waiting.
+    method FlushReady {} {
+        if {!$S(ready)} return
+        set rest [lrange $S(ops) $S(ready) end]
+        set S(ops) [lrange $S(ops) 0 $S(ready)-1]
+        try {
+            my Flush
+        } finally {
+            lappend S(ops) {*}$rest
+        }
     }
 
     # Child -- Returns the result of script in the post interpreter, the waiting operations done first.
@@ -417,15 +458,16 @@ oo::class create ::fivax::mom::Runtime {
         $S(interp) eval $script
     }
 
-    # Listing -- Passes one line to the listing command, if any.
+    # Listing -- Passes one line to the listing command, if any, after the ready handlers ran.
     method Listing {text} {
+        my FlushReady
         if {[llength $S(listing)]} {{*}$S(listing) $text}
     }
 
     # Record -- Maps one CLSF record to globals and events.
     method Record {rec} {
         set kind [dict get $rec kind]
-        lappend S(ops) v ::mom_cl_line [dict get $rec line]
+        lappend S(ops) v mom_cl_line [dict get $rec line]
         if {$S(headerPending) && $kind ni $::fivax::mom::headerKinds} {my FlushHeader}
         if {$S(scale) != 1.0} {set rec [my Scale $rec]}
         if {[llength $S(nurbs)] && $kind ni {KNOT CNTRL}} {my Nurbs}
@@ -681,8 +723,8 @@ oo::class create ::fivax::mom::Runtime {
         if {![info exists S(feed)]} {
             ::fivax::Fail MOM FEED "[::fivax::mom::Where $rec]: GOTO: feed move before any FEDRAT"
         }
-        lappend S(ops) v ::mom_motion_type CUT v ::mom_programmed_feed_rate $S(feed) \
-            v ::mom_feed_rate $S(feed)
+        lappend S(ops) v mom_motion_type CUT v mom_programmed_feed_rate $S(feed) \
+            v mom_feed_rate $S(feed)
     }
 
     # Move --
@@ -691,15 +733,34 @@ oo::class create ::fivax::mom::Runtime {
     #	after a tool change, else MOM_first_move, with mom_motion_event set
     #	to that name (as NX does, inferred from Post Builder's posts, which
     #	choose rapid or feed there from mom_programmed_feed_rate).
+    #	(The operations of a motion are the same each time, Has answering
+    #	once per name: MoveOps makes them at the first, S(move:...) keeps
+    #	them with the number of handlers among them.)
     method Move {event} {
-        lappend S(ops) v ::mom_motion_event $event
-        my Fire before_motion 0
+        set final $event
         if {$S(firstMove)} {
             set S(firstMove) 0
-            set event [expr {$S(toolChanged) ? "initial_move" : "first_move"}]
-            lappend S(ops) v ::mom_motion_event $event
+            set final [expr {$S(toolChanged) ? "initial_move" : "first_move"}]
         }
-        my Fire $event
+        set key move:$event,$final
+        if {![info exists S($key)]} {set S($key) [my MoveOps $event $final]}
+        lassign $S($key) ops handlers
+        lappend S(ops) {*}$ops
+        incr S(events) $handlers
+        set S(ready) [llength $S(ops)]
+    }
+
+    # MoveOps --
+    #	Returns the operations of a motion (see Move) whose event is event
+    #	and whose handler is MOM_<final>, and the number of handlers among
+    #	them.
+    method MoveOps {event final} {
+        set before [my Fires before_motion]
+        set handler [my Fires $final]
+        set ops [list v mom_motion_event $event {*}$before]
+        if {$final ne $event} {lappend ops v mom_motion_event $final}
+        lappend ops {*}$handler
+        list $ops [expr {([llength $before] + [llength $handler]) / 3}]
     }
 
     # SetPosition --
@@ -860,6 +921,8 @@ oo::class create ::fivax::mom::Runtime {
     # Has -- Returns 1 when the post defines the command name.
     method Has {name} {
         if {![info exists S(has:$name)]} {
+            # the handlers ready before this answer run first (they may define name)
+            my FlushReady
             set S(has:$name) [llength [$S(interp) eval [list info commands ::$name]]]
         }
         return $S(has:$name)
