@@ -636,7 +636,7 @@ oo::class create ::fivax::output::Writer {
             # block after a rapid states F again); the waiting TOOL CALL
             # first
             if {$S(pendingTool) ne ""} {lappend lines {*}[my ToolCall]}
-            set words [::fivax::output::AxisWords $rec $S(xyzAddr) $S(rotAddr)]
+            set words [::fivax::output::AxisWords {} $rec $S(xyzAddr) $S(rotAddr)]
             if {$isFeed} {
                 if {$S(feedMode) ne "feed"} {$S(nc) force once KF}
                 set S(feedMode) feed
@@ -672,7 +672,7 @@ oo::class create ::fivax::output::Writer {
                 set feed F
             }
         }
-        lappend words {*}[::fivax::output::AxisWords $rec $S(xyzAddr) $S(rotAddr)]
+        set words [::fivax::output::AxisWords $words $rec $S(xyzAddr) $S(rotAddr)]
         if {$isFeed} {lappend words $feed [dict get $rec rate]}
         lappend lines [$S(nc) block $words]
     }
@@ -728,7 +728,7 @@ oo::class create ::fivax::output::Writer {
             $S(nc) force once F
             set S(feedMode) direct
         }
-        lappend words {*}[::fivax::output::AxisWords $rec $S(xyzAddr) $S(rotAddr)]
+        set words [::fivax::output::AxisWords $words $rec $S(xyzAddr) $S(rotAddr)]
         set start [lmap v [list $sx $sy $sz] {::fivax::num::fixed $v $d}]
         set radius [expr {[dict get $S(cfg) -arc-words] eq "r" ? [my ArcRadius $rec $start] : ""}]
         if {$radius ne ""} {
@@ -855,23 +855,21 @@ oo::class create ::fivax::output::Writer {
 }
 
 # ::fivax::output::AxisWords --
-#	Returns the address words of the axes in move record rec's write
-#	list, by a Writer's addresses xyzAddr {X addr Y addr Z addr} and
-#	rotAddr {name addr step ...} (see the Writer's state): X Y Z as they
-#	are, the rotaries in degrees, one that rolls over (step not "")
-#	rounded to step and wrapped into [0, 360).
-proc ::fivax::output::AxisWords {rec xyzAddr rotAddr} {
-    namespace upvar ::fivax::num pi pi
+#	Returns the block words words followed by the address words of the
+#	axes in move record rec's write list, by a Writer's addresses xyzAddr
+#	{X addr Y addr Z addr} and rotAddr {name addr step ...} (see the
+#	Writer's state): X Y Z as they are, the rotaries in degrees, one that
+#	rolls over (step not "") rounded to step and wrapped into [0, 360).
+proc ::fivax::output::AxisWords {words rec xyzAddr rotAddr} {
     set write [dict get $rec write]
     set axes [dict get $rec axes]
-    set words {}
     foreach {name addr} $xyzAddr {
         if {$name in $write} {lappend words $addr [dict get $axes $name]}
     }
     foreach {name addr step} $rotAddr {
         if {$name ni $write} continue
         # (::fivax::num::deg's product, inline on the per-point path)
-        set deg [expr {[dict get $axes $name] * 180.0 / $pi}]
+        set deg [expr {[dict get $axes $name] * 180.0 / $::fivax::num::pi}]
         if {$step ne ""} {
             # wrap the written value (rounded first, so 359.9996 is 0.000)
             set deg [expr {round($deg / $step) * $step}]

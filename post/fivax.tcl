@@ -478,19 +478,22 @@ proc fivax_emit {moves} {
         if {[dict get $move kind] eq "retract"} {
             fivax_log "retract at [dict get $move src]: [dict get $move note]"
         }
-        # the move ends with its last block; those before it (G80 ...) carry no CL point
         try {
             set lines [$fivax(out) move $move]
         } trap {FIVAX NC} {msg opts} {
             if {[dict get $move src] ne ""} {set msg "[dict get $move src]: $msg"}
             return -code error -errorcode [dict get $opts -errorcode] $msg
         }
+        # the move ends with its last block; those before it (G80 ...)
+        # carry no CL point (each line written as fivax_out does, inline
+        # on the per-point path)
+        set last [lindex $lines end]
         foreach line [lrange $lines 0 end-1] {
-            fivax_out [list $line]
+            if {$line ne ""} {MOM_output_text $line}
             $fivax(verify) block $line {kind none P {} t {} src {}}
         }
-        fivax_out [lrange $lines end end]
-        $fivax(verify) block [lindex $lines end] $move
+        if {$last ne ""} {MOM_output_text $last}
+        $fivax(verify) block $last $move
     }
 }
 
