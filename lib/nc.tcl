@@ -228,9 +228,11 @@ oo::class create ::fivax::nc::Writer {
                         d {set t [::format $spec [expr {round($x)}]]}
                         a {set t [::fivax::nc::Amp $spec $x]}
                         default {
-                            # printf reals, never -0
+                            # printf reals, never -0 (the text of a number
+                            # beyond -1..1 has a digit 1-9: no text test)
                             set t [::format $spec $x]
-                            if {[string match -* $t] && ![string match {*[1-9]*} $t]} {
+                            if {$x > -1 && $x < 1 && [string match -* $t]
+                                    && ![string match {*[1-9]*} $t]} {
                                 set t [expr {$kind eq "F" ? "+" : ""}][string range $t 1 end]
                             }
                         }

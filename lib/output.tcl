@@ -661,19 +661,24 @@ oo::class create ::fivax::output::Writer {
             set S(length) 0
         }
         if {$isFeed} {
+            # (single-value lappends, as in AxisWords)
+            lappend words G_feed
             if {[dict get $rec mode] eq "inverse"} {
-                lappend words G_feed 93
+                lappend words 93
                 set S(feedMode) inverse
                 set feed F_inv
             } else {
-                lappend words G_feed 94
+                lappend words 94
                 if {$S(feedMode) eq "inverse"} {$S(nc) force once F}
                 set S(feedMode) direct
                 set feed F
             }
         }
         set words [::fivax::output::AxisWords $words $rec $S(xyzAddr) $S(rotAddr)]
-        if {$isFeed} {lappend words $feed [dict get $rec rate]}
+        if {$isFeed} {
+            lappend words $feed
+            lappend words [dict get $rec rate]
+        }
         lappend lines [$S(nc) block $words]
     }
 
@@ -861,21 +866,27 @@ oo::class create ::fivax::output::Writer {
 #	Writer's state): X Y Z as they are, the rotaries in degrees, one that
 #	rolls over (step not "") rounded to step and wrapped into [0, 360).
 proc ::fivax::output::AxisWords {words rec xyzAddr rotAddr} {
+    namespace upvar ::fivax::num pi pi
     set write [dict get $rec write]
     set axes [dict get $rec axes]
+    # (single-value lappends: a lappend of two values builds a list first)
     foreach {name addr} $xyzAddr {
-        if {$name in $write} {lappend words $addr [dict get $axes $name]}
+        if {$name in $write} {
+            lappend words $addr
+            lappend words [dict get $axes $name]
+        }
     }
     foreach {name addr step} $rotAddr {
         if {$name ni $write} continue
         # (::fivax::num::deg's product, inline on the per-point path)
-        set deg [expr {[dict get $axes $name] * 180.0 / $::fivax::num::pi}]
+        set deg [expr {[dict get $axes $name] * 180.0 / $pi}]
         if {$step ne ""} {
             # wrap the written value (rounded first, so 359.9996 is 0.000)
             set deg [expr {round($deg / $step) * $step}]
             set deg [expr {fmod(fmod($deg, 360.0) + 360.0, 360.0)}]
         }
-        lappend words $addr $deg
+        lappend words $addr
+        lappend words $deg
     }
     return $words
 }
