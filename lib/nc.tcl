@@ -267,7 +267,7 @@ oo::class create ::fivax::nc::Writer {
             my StopNumbering
             return $out$S(eol)
         }
-        lassign $Addr(N) - kind spec leader trailer
+        lassign $Addr(N) mode kind spec leader trailer
         if {$spec eq "%d"} {
             # (the number is a decimal integer within 64 bits: as %d writes it)
             set t $S(seqNext)
