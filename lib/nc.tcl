@@ -7,7 +7,7 @@
 #	every method returns text; nothing here writes a file.
 #
 #	A Writer keeps per address one list {mode kind spec leader trailer lo
-#	hi limits format}:
+#	hi limits format base forceAlways suppressAlways once}:
 #	    mode  m = modal (written when its text changes), w = always written,
 #	          s = suppressed, W = forced once, S = suppressed once;
 #	    kind  f = printf real, F = printf real with a + flag, d = printf
@@ -19,9 +19,12 @@
 #	          hi) passes every finite value within them, and no Inf or NaN;
 #	    limits {} or {min minAction max maxAction} (NX's MIN/MAX with
 #	          abort, warning or truncate; "" for no bound);
-#	    format the format string as given (printf or &abcdef).
-#	The mode is derived from the flags {base forceAlways suppressAlways
-#	once} by Mode, so the hot path reads one element.
+#	    format the format string as given (printf or &abcdef);
+#	    base forceAlways suppressAlways once: the flags (base off or
+#	          always, the -force of the address; forceAlways and
+#	          suppressAlways 0 or 1; once "", force or suppress).
+#	The mode is derived from the flags by Mode, so the hot path reads one
+#	element.
 #
 #	Note: this namespace defines a command called "format"; every core
 #	format call in here is written ::format.
@@ -60,14 +63,14 @@ proc ::fivax::nc::create {args} {
 }
 
 oo::class create ::fivax::nc::Writer {
-    # Addr($name), Flags($name), Mem($name) (the modal memory: {text
-    # value} of the last word written); the rest in S (few declared
+    # Addr($name) (see the file header), Mem($name) (the modal memory:
+    # {text value} of the last word written); the rest in S (few declared
     # variables: TclOO resolves every local of a method against each
     # declared name on every call): S(cfg) the option dict, S(names) the
     # address names in definition order; S(sep), S(eol), S(seqOn),
     # S(seqNext), S(seqIncr), S(seqMax): the options and the numbering
     # state, out of S(cfg) for the hot path.
-    variable S Addr Flags Mem
+    variable S Addr Mem
 
     constructor {opts} {
         set S(cfg) $opts
@@ -75,8 +78,7 @@ oo::class create ::fivax::nc::Writer {
         array set Addr {}
         my Apply $S(cfg)
         # The nameless address: literal text (template "strings"), always written.
-        set Addr() {w t {} {} {} -1.7976931348623157e308 1.7976931348623157e308 {}}
-        set Flags() {always 0 0 {}}
+        set Addr() {w t {} {} {} -1.7976931348623157e308 1.7976931348623157e308 {} {} always 0 0 {}}
         set Mem() {{} {}}
         my address N -leader N -format %d -force always
     }
@@ -111,8 +113,7 @@ oo::class create ::fivax::nc::Writer {
             ::fivax::Fail NC OPTION "wrong # args: should be \"address name ?-option value ...?\""
         }
         if {[info exists Addr($name)]} {
-            lassign $Addr($name) mode kind spec leader trailer - - limits fmt
-            lassign $Flags($name) base fa sa once
+            lassign $Addr($name) mode kind spec leader trailer - - limits fmt base fa sa once
         } else {
             if {$name eq "" || [regexp {[\s,]} $name]} {
                 ::fivax::Fail NC ADDRESS "bad address name \"$name\""
@@ -147,9 +148,8 @@ oo::class create ::fivax::nc::Writer {
         lassign $limits lo - hi
         if {$lo eq ""} {set lo -1.7976931348623157e308}
         if {$hi eq ""} {set hi 1.7976931348623157e308}
-        set Flags($name) [list $base $fa $sa $once]
         set Addr($name) [list [::fivax::nc::Mode $base $fa $sa $once] $kind $spec $leader \
-            $trailer $lo $hi $limits $fmt]
+            $trailer $lo $hi $limits $fmt $base $fa $sa $once]
         return $name
     }
 
@@ -192,74 +192,82 @@ oo::class create ::fivax::nc::Writer {
     # with one warning: never a repeated N.
     # Errors: {FIVAX NC ADDRESS} for an undefined address name.
     method block {words {numbered 1} {around {}}} {
-        set out {}
+        set out ""
+        set sep ""
         set upd {}
         set once {}
-        foreach {name v} $words {
-            if {![info exists Addr($name)]} {
-                ::fivax::Fail NC ADDRESS "unknown address \"$name\""
-            }
-            lassign $Addr($name) mode kind spec leader trailer lo hi
-            switch -- $mode {
-                s continue
-                S {lappend once $name; continue}
-            }
-            # Number in, decimal: Tcl reads "017" as octal, so integers and
-            # strings go through scan; plain doubles are used as they are
-            # (x is v itself, or what scan read: a second conversion, the
-            # junk after the number, makes the count 2).
-            if {$kind eq "s"} {
-                set t $v
-                if {[string match -* $t] && [string is double -strict $t] && $t == 0} {
-                    set t [string range $t 1 end]
+        # (an undefined name is found by its failed read: no test per word)
+        try {
+            foreach {name v} $words {
+                lassign $Addr($name) mode kind spec leader trailer lo hi
+                switch -- $mode {
+                    s continue
+                    S {lappend once $name; continue}
                 }
-            } elseif {$kind eq "t"} {
-                set t $v
-            } elseif {[string is double -strict [set x $v]] && ![string is entier -strict $v]
-                    || [scan $v %lf%c x x] == 1} {
-                if {!($x >= $lo && $x <= $hi)} {
-                    # beyond a MIN/MAX, or not finite
-                    set x [my Bound $name $x]
-                    if {!($x > -Inf && $x < Inf)} {
-                        ::fivax::Fail NC VALUE "address $name: value is not finite: $v"
+                # Number in, decimal: Tcl reads "017" as octal, so integers and
+                # strings go through scan; plain doubles are used as they are
+                # (x is v itself, or what scan read: a second conversion, the
+                # junk after the number, makes the count 2).
+                if {$kind eq "s"} {
+                    set t $v
+                    if {[string match -* $t] && [string is double -strict $t] && $t == 0} {
+                        set t [string range $t 1 end]
                     }
-                }
-                switch -- $kind {
-                    d {set t [::format $spec [expr {round($x)}]]}
-                    a {set t [::fivax::nc::Amp $spec $x]}
-                    default {
-                        # printf reals, never -0
-                        set t [::format $spec $x]
-                        if {[string match -* $t] && ![string match {*[1-9]*} $t]} {
-                            set t [expr {$kind eq "F" ? "+" : ""}][string range $t 1 end]
+                } elseif {$kind eq "t"} {
+                    set t $v
+                } elseif {[string is double -strict [set x $v]] && ![string is entier -strict $v]
+                        || [scan $v %lf%c x x] == 1} {
+                    if {!($x >= $lo && $x <= $hi)} {
+                        # beyond a MIN/MAX, or not finite
+                        set x [my Bound $name $x]
+                        if {!($x > -Inf && $x < Inf)} {
+                            ::fivax::Fail NC VALUE "address $name: value is not finite: $v"
                         }
                     }
+                    switch -- $kind {
+                        d {set t [::format $spec [expr {round($x)}]]}
+                        a {set t [::fivax::nc::Amp $spec $x]}
+                        default {
+                            # printf reals, never -0 (the text of a number
+                            # beyond -1..1 has a digit 1-9: no text test)
+                            set t [::format $spec $x]
+                            if {$x > -1 && $x < 1 && [string match -* $t]
+                                    && ![string match {*[1-9]*} $t]} {
+                                set t [expr {$kind eq "F" ? "+" : ""}][string range $t 1 end]
+                            }
+                        }
+                    }
+                } elseif {$v eq ""} {
+                    continue
+                } else {
+                    # not a number: an already formatted code
+                    set t $v
                 }
-            } elseif {$v eq ""} {
-                continue
-            } else {
-                # not a number: an already formatted code
-                set t $v
+                if {$mode eq "m"} {
+                    if {$t eq [lindex $Mem($name) 0]} continue
+                } elseif {$mode eq "W"} {
+                    lappend once $name
+                }
+                # (single-value lappends and append are bytecode; join is not)
+                append out $sep$leader$t$trailer
+                set sep $S(sep)
+                lappend upd $name
+                lappend upd [list $t $v]
             }
-            if {$mode eq "m"} {
-                if {$t eq [lindex $Mem($name) 0]} continue
-            } elseif {$mode eq "W"} {
-                lappend once $name
-            }
-            lappend out $leader$t$trailer
-            lappend upd $name [list $t $v]
+        } trap {TCL READ VARNAME} {msg opts} {
+            if {[info exists Addr($name)]} {return -options $opts $msg}
+            ::fivax::Fail NC ADDRESS "unknown address \"$name\""
         }
         array set Mem $upd
         if {[llength $once]} {my ConsumeOnce $once}
-        if {![llength $out]} {return ""}
-        set out [join $out $S(sep)]
+        if {![llength $upd]} {return ""}
         if {[llength $around]} {set out [lindex $around 0]$out[lindex $around 1]}
         if {!$numbered || !$S(seqOn)} {return $out$S(eol)}
         if {$S(seqNext) > $S(seqMax)} {
             my StopNumbering
             return $out$S(eol)
         }
-        lassign $Addr(N) - kind spec leader trailer
+        lassign $Addr(N) mode kind spec leader trailer
         if {$spec eq "%d"} {
             # (the number is a decimal integer within 64 bits: as %d writes it)
             set t $S(seqNext)
@@ -401,8 +409,8 @@ oo::class create ::fivax::nc::Writer {
     # Clears the once requests of the addresses (names) used by a block.
     method ConsumeOnce {names} {
         foreach name $names {
-            lset Flags($name) 3 {}
-            lset Addr($name) 0 [::fivax::nc::Mode {*}$Flags($name)]
+            lset Addr($name) 12 {}
+            lset Addr($name) 0 [::fivax::nc::Mode {*}[lrange $Addr($name) 9 12]]
         }
     }
 
@@ -416,16 +424,16 @@ oo::class create ::fivax::nc::Writer {
                 ::fivax::Fail NC ADDRESS "unknown address \"$name\""
             }
         }
-        set slot [expr {$what eq "force" ? 1 : 2}]
+        set slot [expr {$what eq "force" ? 10 : 11}]
         foreach name $addresses {
-            lassign $Flags($name) base fa sa once
+            set once [lindex $Addr($name) 12]
             switch -- $how {
                 once {set once $what}
-                always {lset Flags($name) $slot 1; set once [expr {$once eq $what ? "" : $once}]}
-                off {lset Flags($name) $slot 0; set once [expr {$once eq $what ? "" : $once}]}
+                always {lset Addr($name) $slot 1; set once [expr {$once eq $what ? "" : $once}]}
+                off {lset Addr($name) $slot 0; set once [expr {$once eq $what ? "" : $once}]}
             }
-            lset Flags($name) 3 $once
-            lset Addr($name) 0 [::fivax::nc::Mode {*}$Flags($name)]
+            lset Addr($name) 12 $once
+            lset Addr($name) 0 [::fivax::nc::Mode {*}[lrange $Addr($name) 9 12]]
         }
         return
     }

@@ -636,7 +636,7 @@ oo::class create ::fivax::output::Writer {
             # block after a rapid states F again); the waiting TOOL CALL
             # first
             if {$S(pendingTool) ne ""} {lappend lines {*}[my ToolCall]}
-            set words [::fivax::output::AxisWords $rec $S(xyzAddr) $S(rotAddr)]
+            set words [::fivax::output::AxisWords {} $rec $S(xyzAddr) $S(rotAddr)]
             if {$isFeed} {
                 if {$S(feedMode) ne "feed"} {$S(nc) force once KF}
                 set S(feedMode) feed
@@ -661,19 +661,24 @@ oo::class create ::fivax::output::Writer {
             set S(length) 0
         }
         if {$isFeed} {
+            # (single-value lappends, as in AxisWords)
+            lappend words G_feed
             if {[dict get $rec mode] eq "inverse"} {
-                lappend words G_feed 93
+                lappend words 93
                 set S(feedMode) inverse
                 set feed F_inv
             } else {
-                lappend words G_feed 94
+                lappend words 94
                 if {$S(feedMode) eq "inverse"} {$S(nc) force once F}
                 set S(feedMode) direct
                 set feed F
             }
         }
-        lappend words {*}[::fivax::output::AxisWords $rec $S(xyzAddr) $S(rotAddr)]
-        if {$isFeed} {lappend words $feed [dict get $rec rate]}
+        set words [::fivax::output::AxisWords $words $rec $S(xyzAddr) $S(rotAddr)]
+        if {$isFeed} {
+            lappend words $feed
+            lappend words [dict get $rec rate]
+        }
         lappend lines [$S(nc) block $words]
     }
 
@@ -728,7 +733,7 @@ oo::class create ::fivax::output::Writer {
             $S(nc) force once F
             set S(feedMode) direct
         }
-        lappend words {*}[::fivax::output::AxisWords $rec $S(xyzAddr) $S(rotAddr)]
+        set words [::fivax::output::AxisWords $words $rec $S(xyzAddr) $S(rotAddr)]
         set start [lmap v [list $sx $sy $sz] {::fivax::num::fixed $v $d}]
         set radius [expr {[dict get $S(cfg) -arc-words] eq "r" ? [my ArcRadius $rec $start] : ""}]
         if {$radius ne ""} {
@@ -855,18 +860,21 @@ oo::class create ::fivax::output::Writer {
 }
 
 # ::fivax::output::AxisWords --
-#	Returns the address words of the axes in move record rec's write
-#	list, by a Writer's addresses xyzAddr {X addr Y addr Z addr} and
-#	rotAddr {name addr step ...} (see the Writer's state): X Y Z as they
-#	are, the rotaries in degrees, one that rolls over (step not "")
-#	rounded to step and wrapped into [0, 360).
-proc ::fivax::output::AxisWords {rec xyzAddr rotAddr} {
+#	Returns the block words words followed by the address words of the
+#	axes in move record rec's write list, by a Writer's addresses xyzAddr
+#	{X addr Y addr Z addr} and rotAddr {name addr step ...} (see the
+#	Writer's state): X Y Z as they are, the rotaries in degrees, one that
+#	rolls over (step not "") rounded to step and wrapped into [0, 360).
+proc ::fivax::output::AxisWords {words rec xyzAddr rotAddr} {
     namespace upvar ::fivax::num pi pi
     set write [dict get $rec write]
     set axes [dict get $rec axes]
-    set words {}
+    # (single-value lappends: a lappend of two values builds a list first)
     foreach {name addr} $xyzAddr {
-        if {$name in $write} {lappend words $addr [dict get $axes $name]}
+        if {$name in $write} {
+            lappend words $addr
+            lappend words [dict get $axes $name]
+        }
     }
     foreach {name addr step} $rotAddr {
         if {$name ni $write} continue
@@ -877,7 +885,8 @@ proc ::fivax::output::AxisWords {rec xyzAddr rotAddr} {
             set deg [expr {round($deg / $step) * $step}]
             set deg [expr {fmod(fmod($deg, 360.0) + 360.0, 360.0)}]
         }
-        lappend words $addr $deg
+        lappend words $addr
+        lappend words $deg
     }
     return $words
 }

@@ -63,8 +63,9 @@ proc fivax_handler {name body} {
 
 # fivax_where -- Returns FILE:LINE of the current CL record (replay), else the operation and point.
 proc fivax_where {} {
-    global mom_cl_file mom_cl_line mom_mcs_goto
+    global mom_cl_file mom_cl_line
     if {[info exists mom_cl_line]} {return "$mom_cl_file:$mom_cl_line"}
+    global mom_mcs_goto
     if {[info exists mom_mcs_goto(2)]} {
         return [format "CL point (%.4f, %.4f, %.4f)" $mom_mcs_goto(0) $mom_mcs_goto(1) $mom_mcs_goto(2)]
     }
@@ -478,19 +479,24 @@ proc fivax_emit {moves} {
         if {[dict get $move kind] eq "retract"} {
             fivax_log "retract at [dict get $move src]: [dict get $move note]"
         }
-        # the move ends with its last block; those before it (G80 ...) carry no CL point
         try {
             set lines [$fivax(out) move $move]
         } trap {FIVAX NC} {msg opts} {
             if {[dict get $move src] ne ""} {set msg "[dict get $move src]: $msg"}
             return -code error -errorcode [dict get $opts -errorcode] $msg
         }
-        foreach line [lrange $lines 0 end-1] {
-            fivax_out [list $line]
-            $fivax(verify) block $line {kind none P {} t {} src {}}
+        # the move ends with its last block; those before it (G80 ...)
+        # carry no CL point (each line written as fivax_out does, inline
+        # on the per-point path)
+        if {[llength $lines] > 1} {
+            foreach line [lrange $lines 0 end-1] {
+                if {$line ne ""} {MOM_output_text $line}
+                $fivax(verify) block $line {kind none P {} t {} src {}}
+            }
         }
-        fivax_out [lrange $lines end end]
-        $fivax(verify) block [lindex $lines end] $move
+        set last [lindex $lines end]
+        if {$last ne ""} {MOM_output_text $last}
+        $fivax(verify) block $last $move
     }
 }
 
