@@ -486,16 +486,15 @@ proc fivax_emit {moves} {
             return -code error -errorcode [dict get $opts -errorcode] $msg
         }
         # the move ends with its last block; those before it (G80 ...)
-        # carry no CL point (each line written as fivax_out does, inline
-        # on the per-point path)
+        # carry no CL point
         if {[llength $lines] > 1} {
             foreach line [lrange $lines 0 end-1] {
-                if {$line ne ""} {MOM_output_text $line}
+                fivax_out [list $line]
                 $fivax(verify) block $line {kind none P {} t {} src {}}
             }
         }
         set last [lindex $lines end]
-        if {$last ne ""} {MOM_output_text $last}
+        fivax_out [list $last]
         $fivax(verify) block $last $move
     }
 }
