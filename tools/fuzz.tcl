@@ -184,7 +184,8 @@ proc ::fuzz::Excerpt {lines most} {
     concat [lrange $lines 0 [expr {$first - 1}]] [list FEDRAT/MMPM,1000] $body
 }
 
-# --- CL mutations (each: lines canary -> {lines tag}) --------------------
+# --- CL mutations (each: lines canary -> {lines tag}; canary is the
+# stand-in that MakeCase replaces by the canary file's path) ----------------
 
 # ::fuzz::Line -- Returns a random line index of lines (0 when empty).
 proc ::fuzz::Line {lines} {
@@ -473,26 +474,33 @@ proc ::fuzz::MakeCase {i seed sources machines most work} {
     set dir [file join $work c$i]
     file mkdir $dir
     set canary [file join $dir CANARY]
+    # The mutations aim at a stand-in of fixed length, the canary's path
+    # put in its place when the files are written: the random draws that
+    # depend on a text's length (a cut, a flipped byte) then make the same
+    # case whatever the work directory's name.
+    set token @CANARY@
+    set aim [list $token $canary]
     lassign [lrange $sources [expr {2 * [Rand [expr {[llength $sources] / 2}]]}] end] name lines
     set lines [Excerpt $lines $most]
     set tags [list src:$name]
     set n [expr {[Chance 0.05] ? 0 : [Pick {1 1 1 1 1 1 2 2 2 3}]}]
     for {set k 0} {$k < $n} {incr k} {
-        lassign [M_[Mutation] $lines $canary] lines tag
+        lassign [M_[Mutation] $lines $token] lines tag
         lappend tags $tag
     }
-    WriteBytes [file join $dir in.cls] [join $lines \n]\n
+    WriteBytes [file join $dir in.cls] [string map $aim [join $lines \n]]\n
     set machine [lindex $machines [expr {$i % [llength $machines]}]]
     lappend tags machine:[file rootname [file tail $machine]]
     if {[Chance 0.08]} {
-        lassign [MutateMachine [ReadBytes $machine] $canary] text tag
-        WriteBytes [file join $dir m.tcl] $text
+        lassign [MutateMachine [ReadBytes $machine] $token] text tag
+        WriteBytes [file join $dir m.tcl] [string map $aim $text]
         set machine m.tcl
         lappend tags $tag
     }
     set args {}
     if {[Chance 0.08]} {
-        lassign [Args $canary] args tag
+        lassign [Args $token] args tag
+        set args [lmap a $args {string map $aim $a}]
         lappend tags $tag
     }
     if {"-controller" ni $args && [Chance 0.2]} {
