@@ -15,6 +15,9 @@
 #	  -tol 0, no check   linearisation off (-tol 0) and the block check
 #	             left out (the checker's block method replaced by a no-op
 #	             in the post interpreter: a bench-only measure, no option)
+#	  fused floor        every step of the default on these plain GOTOs
+#	             fused into two loops (::bench::Fused): the most pure Tcl
+#	             can reach with the post's work and no post structure
 #	  minimal    the minimal loop (::bench::Loop): scan, kin orientations
 #	             and position (first solution), format, write
 #	The file is a zig-zag raster over the example surface
@@ -22,9 +25,10 @@
 #	(generated once), repeated to the size. Nothing is asserted: the
 #	figures are for reading, and make test times nothing.
 #
-#	Two internal modes run the child processes:
+#	Three internal modes run the child processes:
 #	  tclsh tools/bench.tcl -loop MACHINE CL OUT
 #	  tclsh tools/bench.tcl -nocheck ?replay options? CL
+#	  tclsh tools/bench.tcl -fused MACHINE CL OUT
 
 package require Tcl 8.6
 
@@ -164,6 +168,165 @@ proc ::bench::Loop {machineFile cl out} {
     puts stderr "fivax: $n records read"
 }
 
+# ::bench::Fused --
+#	The fused floor: every step the default post takes on a plain feed
+#	GOTO, in two straight loops with no post structure (no MOM runtime, no
+#	handlers, no move records), to show what pure Tcl can reach at best.
+#	Post (FusedPost) then check (FusedCheck), one process; the time of
+#	each on stderr.
+proc ::bench::Fused {machineFile cl out} {
+    set machine [::fivax::machine::load $machineFile]
+    set model [::fivax::kin::model $machine 75]
+    set t0 [clock microseconds]
+    lassign [FusedPost $model $machine $cl $out] n over
+    set t1 [clock microseconds]
+    set bad [FusedCheck $model $cl $out]
+    set t2 [clock microseconds]
+    puts stderr [format "fivax: %d records read; post %.2f s (%d moves over the tolerance), check %.2f s (%d blocks off)" \
+        $n [expr {($t1 - $t0) / 1e6}] $over [expr {($t2 - $t1) / 1e6}] $bad]
+}
+
+# ::bench::FusedPost --
+#	The posting half of the fused floor: scan each GOTO of cl; both
+#	inverse solutions, each solution's aliases nearest the last rotaries,
+#	the nearest pair within the limits (else the nearest) rounded to
+#	0.001 deg; X Y Z; the interpolation bound of the move; its
+#	inverse-time feed; the changed words with a sequence number, and F;
+#	written to out. Returns {GOTOs read, moves the bound puts over 0.01 mm
+#	or 0.05 deg} (the post would split those).
+proc ::bench::FusedPost {model machine cl out} {
+    lassign [lmap a [dict get $machine chain] {list [dict get $a min] [dict get $a max]}] l1 l2
+    lassign $l1 min1 max1
+    lassign $l2 min2 max2
+    set toDeg [expr {180.0 / acos(-1.0)}]
+    set step [expr {0.001 / $toDeg}]
+    set atol [expr {0.05 / $toDeg}]
+    set over 0
+    set in [open $cl r]
+    set o [open $out w]
+    chan configure $o -translation lf -buffersize 1048576
+    array set last {X "" Y "" Z "" B "" C ""}
+    set t {0.0 0.0 1.0}
+    set feed 1000.0
+    set g1 0.0
+    set g2 0.0
+    set J {0.0 0.0 0.0 0.0 0.0}
+    set P {0.0 0.0 0.0}
+    set T $t
+    set n 0
+    set seq 0
+    while {[gets $in line] >= 0} {
+        if {[string range $line 0 4] ne "GOTO/"} {
+            scan $line FEDRAT/MMPM,%f feed
+            continue
+        }
+        if {[scan [string range $line 5 end] %f,%f,%f,%f,%f,%f x y z i j k] == 6} {
+            set t [list $i $j $k]
+        }
+        set best {}
+        set any {}
+        set bd Inf
+        set ad Inf
+        foreach sol [lindex [::fivax::kin::orientations $model $t] 1] {
+            lassign $sol a b
+            set a [expr {$a + 6.283185307179586 * round(($g1 - $a) / 6.283185307179586)}]
+            set b [expr {$b + 6.283185307179586 * round(($g2 - $b) / 6.283185307179586)}]
+            set d [expr {($a > $g1 ? $a - $g1 : $g1 - $a) + ($b > $g2 ? $b - $g2 : $g2 - $b)}]
+            if {$a >= $min1 && $a <= $max1 && $b >= $min2 && $b <= $max2} {
+                if {$d < $bd} {set bd $d; set best [list $a $b]}
+            } elseif {$d < $ad} {
+                set ad $d
+                set any [list $a $b]
+            }
+        }
+        if {$best eq ""} {set best $any}
+        # rotaries at the output resolution (0.001 deg) before X Y Z
+        lassign $best g1 g2
+        set g1 [expr {round($g1 / $step) * $step}]
+        set g2 [expr {round($g2 / $step) * $step}]
+        set best [list $g1 $g2]
+        set P0 $P
+        set P [list $x $y $z]
+        lassign [::fivax::kin::position $model $P $best] X Y Z
+        set J0 $J
+        set J [list $X $Y $Z $g1 $g2]
+        lassign [::fivax::kin::interpolationBound $model $J0 $J $P0 $P $T $t 5e-4 1e-5] bp ba
+        if {$bp > 0.01 || $ba > $atol} {incr over}
+        set T $t
+        lassign $P0 x0 y0 z0
+        set len [expr {sqrt(($x - $x0) ** 2 + ($y - $y0) ** 2 + ($z - $z0) ** 2)}]
+        set F [expr {$len > 0.0 ? $feed / $len : $feed}]
+        set words N[incr seq 10]
+        foreach a {X Y Z B C} v [list $X $Y $Z [expr {$g1 * $toDeg}] [expr {$g2 * $toDeg}]] {
+            set s [format %.3f $v]
+            if {$s ne $last($a)} {
+                set last($a) $s
+                append words " " $a $s
+            }
+        }
+        # (inverse time: F in every block)
+        puts $o [format "%s F%.3f" $words $F]
+        incr n
+    }
+    close $in
+    close $o
+    list $n $over
+}
+
+# ::bench::FusedCheck --
+#	The checking half of the fused floor: reads each block of out back
+#	(scan), beside its GOTO of cl; forward kinematics of the written
+#	values against the CL point and axis (0.01 mm, 0.05 deg) and the
+#	interpolation bound of the written move. Returns the blocks off in
+#	either.
+proc ::bench::FusedCheck {model cl out} {
+    set toRad [expr {acos(-1.0) / 180.0}]
+    set atol [expr {0.05 * $toRad}]
+    set in [open $cl r]
+    set nc [open $out r]
+    set j {0.0 0.0 0.0 0.0 0.0}
+    set t {0.0 0.0 1.0}
+    set P {0.0 0.0 0.0}
+    set T $t
+    set J $j
+    set bad 0
+    while {[gets $nc block] >= 0} {
+        while {[gets $in line] >= 0 && [string range $line 0 4] ne "GOTO/"} {}
+        if {[scan [string range $line 5 end] %f,%f,%f,%f,%f,%f x y z i k l] == 6} {
+            set t [list $i $k $l]
+        }
+        foreach word [split $block " "] {
+            scan $word %c%f letter value
+            switch -- $letter {
+                88 {lset j 0 $value}
+                89 {lset j 1 $value}
+                90 {lset j 2 $value}
+                66 {lset j 3 [expr {$value * $toRad}]}
+                67 {lset j 4 [expr {$value * $toRad}]}
+            }
+        }
+        lassign [::fivax::kin::forward $model $j] fP fT
+        lassign $fP a b c
+        lassign $fT u v w
+        lassign $t p q r
+        # (0.99999961923 is cos 0.05 deg)
+        if {($a - $x) ** 2 + ($b - $y) ** 2 + ($c - $z) ** 2 > 1e-4
+                || $u * $p + $v * $q + $w * $r < 0.99999961923} {
+            incr bad
+        }
+        set P0 $P
+        set P [list $x $y $z]
+        set J0 $J
+        set J $j
+        lassign [::fivax::kin::interpolationBound $model $J0 $J $P0 $P $T $t 5e-4 1e-5] bp ba
+        if {$bp > 0.01 || $ba > $atol} {incr bad}
+        set T $t
+    }
+    close $in
+    close $nc
+    return $bad
+}
+
 # ::bench::NoCheck --
 #	Runs tools/replay.tcl with the command line words, the post's block
 #	check replaced by a no-op in the post interpreter.
@@ -191,6 +354,7 @@ proc ::bench::main {argv} {
     switch -- [lindex $argv 0] {
         -loop {return [Loop {*}[lrange $argv 1 end]]}
         -nocheck {return [NoCheck [lrange $argv 1 end]]}
+        -fused {return [Fused {*}[lrange $argv 1 end]]}
     }
     try {
         lassign [::fivax::opts argv $options $argv bench] opts rest
@@ -234,6 +398,7 @@ proc ::bench::main {argv} {
                 "one process" [list $tclsh $replay -machine $machineFile -check-process off -o $out $cl] \
                 "-tol 0, no check" [list $tclsh $bench -nocheck -machine $machineFile -tol 0 \
                     -check-process off -o $out $cl] \
+                "fused floor" [list $tclsh $bench -fused $machineFile $cl $out] \
                 minimal [list $tclsh $bench -loop $machineFile $cl $out]]
             set rates {}
             foreach {label words} $rows {
@@ -244,7 +409,9 @@ proc ::bench::main {argv} {
                 puts [format "%-9d %-18s %9d %12.0f %9.2f %8s" $n $label $records $rate $wall [Mb $mb]]
                 file delete $out [file rootname $out].log
             }
-            lassign $rates replayRate oneRate nocheckRate minimalRate
+            lassign $rates replayRate oneRate nocheckRate floorRate minimalRate
+            puts [format "%-9s %-18s %.1f (%.1f in one process)" "" "floor / replay" \
+                [expr {$floorRate / $replayRate}] [expr {$floorRate / $oneRate}]]
             puts [format "%-9s %-18s %s" "" "minimal / replay" \
                 [format "%.1f (%.1f in one process, %.1f without linearisation and check)" \
                     [expr {$minimalRate / $replayRate}] [expr {$minimalRate / $oneRate}] \
