@@ -227,10 +227,11 @@ proc ::bench::FusedPost {model machine cl out} {
         set any {}
         set bd Inf
         set ad Inf
+        # (the planner's own alias and rounding procs)
         foreach sol [lindex [::fivax::kin::orientations $model $t] 1] {
             lassign $sol a b
-            set a [expr {$a + 6.283185307179586 * round(($g1 - $a) / 6.283185307179586)}]
-            set b [expr {$b + 6.283185307179586 * round(($g2 - $b) / 6.283185307179586)}]
+            set a [::fivax::motion::Near $a $g1]
+            set b [::fivax::motion::Near $b $g2]
             set d [expr {($a > $g1 ? $a - $g1 : $g1 - $a) + ($b > $g2 ? $b - $g2 : $g2 - $b)}]
             if {$a >= $min1 && $a <= $max1 && $b >= $min2 && $b <= $max2} {
                 if {$d < $bd} {set bd $d; set best [list $a $b]}
@@ -241,10 +242,8 @@ proc ::bench::FusedPost {model machine cl out} {
         }
         if {$best eq ""} {set best $any}
         # rotaries at the output resolution (0.001 deg) before X Y Z
+        set best [::fivax::motion::Quantize $step {*}$best]
         lassign $best g1 g2
-        set g1 [expr {round($g1 / $step) * $step}]
-        set g2 [expr {round($g2 / $step) * $step}]
-        set best [list $g1 $g2]
         set P0 $P
         set P [list $x $y $z]
         lassign [::fivax::kin::position $model $P $best] X Y Z
