@@ -146,7 +146,8 @@ proc ::bench::Records {err} {
 #	file machineFile and writes one G1 block a point to out.
 proc ::bench::Loop {machineFile cl out} {
     set model [::fivax::kin::model [::fivax::machine::load $machineFile] 75]
-    set toDeg [expr {180.0 / acos(-1.0)}]
+    namespace upvar ::fivax::num pi pi
+    set toDeg [expr {180.0 / $pi}]
     set in [open $cl r]
     set o [open $out w]
     chan configure $o -translation lf -buffersize 1048576
@@ -198,7 +199,8 @@ proc ::bench::FusedPost {model machine cl out} {
     lassign [lmap a [dict get $machine chain] {list [dict get $a min] [dict get $a max]}] l1 l2
     lassign $l1 min1 max1
     lassign $l2 min2 max2
-    set toDeg [expr {180.0 / acos(-1.0)}]
+    namespace upvar ::fivax::num pi pi
+    set toDeg [expr {180.0 / $pi}]
     set step [expr {0.001 / $toDeg}]
     set atol [expr {0.05 / $toDeg}]
     set over 0
@@ -279,7 +281,8 @@ proc ::bench::FusedPost {model machine cl out} {
 #	interpolation bound of the written move. Returns the blocks off in
 #	either.
 proc ::bench::FusedCheck {model cl out} {
-    set toRad [expr {acos(-1.0) / 180.0}]
+    namespace upvar ::fivax::num pi pi
+    set toRad [expr {$pi / 180.0}]
     set atol [expr {0.05 * $toRad}]
     set in [open $cl r]
     set nc [open $out r]
