@@ -238,7 +238,7 @@ fivax_handler MOM_tool_change {
         error "tool change to tool '[expr {[info exists mom_tool_number] ? $mom_tool_number : ""}]':\
             the tool needs a number of 1 or more (set it in the CAM tool)"
     }
-    set len [fivax_tool_length]
+    set len [fivax_tool_length "tool $mom_tool_number"]
     set adjust $mom_tool_number
     if {[info exists mom_tool_length_adjust_register]
             && [string is entier -strict $mom_tool_length_adjust_register]} {
@@ -262,14 +262,14 @@ fivax_handler MOM_tool_change {
 }
 
 # fivax_tool_length --
-#	Returns the length of the tool being changed to: the CL's (TLDATA,
-#	mom_tool_length above 0), else the setting -tool-length, else, where
-#	the written X Y Z do not depend on it (table-table machines, TCP
-#	mode), the machine file's tool_length. Joint mode on a head machine
-#	with neither is an error: its X Y Z would be computed for a length the
-#	machine does not have.
-proc fivax_tool_length {} {
-    global fivax mom_tool_length mom_tool_number
+#	Returns the length of the tool (what: its name in messages) being
+#	changed to: the CL's (TLDATA, mom_tool_length above 0), else the
+#	setting -tool-length, else, where the written X Y Z do not depend on
+#	it (table-table machines, TCP mode), the machine file's tool_length.
+#	Joint mode on a head machine with neither is an error: its X Y Z
+#	would be computed for a length the machine does not have.
+proc fivax_tool_length {what} {
+    global fivax mom_tool_length
     if {[info exists mom_tool_length] && [string is double -strict $mom_tool_length]
             && $mom_tool_length > 0} {
         return $mom_tool_length
@@ -280,7 +280,7 @@ proc fivax_tool_length {} {
     set tcp [dict get $fivax(settings) -tcp]
     if {$tcp eq ""} {set tcp [dict get $machine tcp]}
     if {!$tcp && [dict get $machine kind] ne "tabletable"} {
-        error "tool $mom_tool_number has no length in the CL (no TLDATA; a CUTTER height is\
+        error "$what has no length in the CL (no TLDATA; a CUTTER height is\
             not a gauge length), and joint mode on [dict get $machine name] (a head machine)\
             computes X Y Z from it: give the tool's length with -tool-length MM"
     }
@@ -428,6 +428,13 @@ proc fivax_first_move {} {
     if {!$fivax(positioned)} {
         # no tool change before: the position is unknown, start from the top
         fivax_emit [$fivax(plan) flush]
+        if {$fivax(tool) eq ""} {
+            # no tool change at all: the tool in the spindle needs its length too
+            set len [fivax_tool_length "the tool (the CL names none)"]
+            set fivax(tool) [list "" "" $len]
+            $fivax(plan) setTool $len
+            $fivax(verify) setTool $len
+        }
         fivax_out [$fivax(out) safeZ]
         set fivax(positioned) 1
     }
