@@ -68,6 +68,15 @@ proc corpusFile {name} {
     file join $::clCorpus $name
 }
 
+# machineRpm --
+#	Returns the path of the temporary file rpm-<name>.tcl: the shipped
+#	machine file machines/name.tcl with default_rpm 10000, for the real CL
+#	files that have no SPINDL record (most NX ones: no cut without a
+#	speed). The test that calls it removes it (removeFile rpm-<name>.tcl).
+proc machineRpm {name} {
+    makeFile "[viewFile [file join $::fivaxRoot machines $name.tcl]]\ndefault_rpm 10000\n" rpm-$name.tcl
+}
+
 # runReplay --
 #	Runs tools/replay.tcl with args; returns {code output} (output:
 #	standard output and error together). Every NC file a successful run
