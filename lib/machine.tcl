@@ -32,7 +32,7 @@ namespace eval ::fivax::machine {
         clearance 50 safe_z {} feed_min 1 feed_max 20000
         inverse_time_max 9999 max_swing 180 work_offset 54 tool_change_z 0
         home_rotaries 0 entry_feed {} tcp 0 tcp_codes {} swivel_record TC1
-        travel {}
+        travel {} default_rpm {}
     }
     variable topRequired {name axes}
     variable axisKeys {side direction point sense min max continuous prefer rollover offset}
@@ -48,6 +48,8 @@ namespace eval ::fivax::machine {
     # already triple it).
     variable maxSpan {limited 720 continuous 3600}
     variable maxFeed 1e7
+    # Largest spindle speed (rpm) of 'default_rpm'.
+    variable maxRpm 1e6
     # Values within this of a limit (mm, rad) are inside it.
     variable limitSlack 1e-9
 }
@@ -177,6 +179,7 @@ proc ::fivax::machine::parse {text sourceName} {
         if {$v <= 0} {::fivax::Fail MACHINE VALUE "$src: 'entry_feed' must be positive: $v"}
     }
     dict set m entry_feed $v
+    dict set m default_rpm [DefaultRpm $src [Get $raw default_rpm]]
     set v [Get $raw tcp]
     if {$v ni {0 1}} {::fivax::Fail MACHINE VALUE "$src: 'tcp' must be 0 or 1: $v"}
     dict set m tcp $v
@@ -255,6 +258,20 @@ proc ::fivax::machine::Length {src key value {what ""}} {
     set v [Real $src $key $value $what]
     if {abs($v) > $maxLength} {
         ::fivax::Fail MACHINE VALUE "$src: ${what}'$key' is out of range (at most $maxLength in magnitude): $value"
+    }
+    return $v
+}
+
+# ::fivax::machine::DefaultRpm --
+#	Returns the value of 'default_rpm' (the spindle speed of cutting
+#	moves whose CL gives none): "" (none: such a move is an error) or a
+#	number from 1 to maxRpm.
+proc ::fivax::machine::DefaultRpm {src value} {
+    variable maxRpm
+    if {$value eq ""} {return ""}
+    set v [Real $src default_rpm $value]
+    if {$v < 1 || $v > $maxRpm} {
+        ::fivax::Fail MACHINE VALUE "$src: 'default_rpm' must be {} or 1 to [format %g $maxRpm] rpm: $value"
     }
     return $v
 }

@@ -531,13 +531,13 @@ oo::class create ::fivax::mom::Runtime {
         set S(headerPending) 1
     }
 
-    # ToolData -- Sets mom_tool_* from a TLDATA or CUTTER record.
+    # ToolData --
+    #	Sets mom_tool_* from a TLDATA or CUTTER record. A CUTTER has no
+    #	gauge length: mom_tool_length 0 (none), not the previous tool's.
     method ToolData {rec} {
         set pairs [list mom_tool_diameter [dict get $rec diameter] \
-            mom_tool_corner1_radius [dict get $rec corner1_radius]]
-        if {[dict exists $rec length]} {
-            lappend pairs mom_tool_length [dict get $rec length]
-        }
+            mom_tool_corner1_radius [dict get $rec corner1_radius] \
+            mom_tool_length [expr {[dict exists $rec length] ? [dict get $rec length] : 0.0}]]
         foreach {key var} {taper_angle mom_tool_taper_angle tip_angle mom_tool_tip_angle
             flute_length mom_tool_flute_length} {
             if {[dict exists $rec $key]} {lappend pairs $var [dict get $rec $key]}

@@ -420,6 +420,8 @@ oo::class create ::fivax::output::Writer {
 
     # Returns the spindle-on blocks: speed (rpm), direction CLW or CCLW
     # (Klartext: the waiting TOOL CALL with S, or TOOL CALL Z S, then M3).
+    # A start (the spindle not turning that way) writes S too, even when
+    # it is in effect already.
     method spindle {speed direction} {
         set m [expr {$direction eq "CCLW" ? 4 : 3}]
         set speed [expr {round($speed)}]
@@ -430,6 +432,7 @@ oo::class create ::fivax::output::Writer {
             set S(pendingTool) ""
             return [concat [list [$S(nc) line "$call S$speed"]] [my KlartextM [list M_spindle $m]]]
         }
+        if {[$S(nc) value M_spindle] ne $m} {$S(nc) force once S}
         concat [my CycleOff] [list [$S(nc) block [list S $speed M_spindle $m]]]
     }
 

@@ -10,6 +10,8 @@ namespace eval ::fivax::settings {
     variable Job {
         {-machine text {} FILE "machine file (default: the post's machine, machines/hh-tilt45.tcl)"}
         {-arc-tol {real gt 0} 0.002 MM "chord tolerance of arcs written as points"}
+        {-tool-length {maybe real gt 0} {} MM
+            "tool length (gauge length) of the tools the CL gives none (no TLDATA); a CL length wins. Required in joint mode on a head machine"}
         {-log text {} FILE
             "file for warnings, retracts and errors (default: <output>.log beside the NC file when the host names it)"}
     }
@@ -17,9 +19,10 @@ namespace eval ::fivax::settings {
 
 # ::fivax::settings::table --
 #	Returns the option table of a posting job: -machine, -controller (the
-#	output layer's dialects; default: the machine's), -arc-tol, -log, the
-#	output layer's -arc-words and -insert and the planner's options but -angle-step and
-#	-output (set from the output layer: its resolution and what it writes).
+#	output layer's dialects; default: the machine's), -arc-tol,
+#	-tool-length, -log, the output layer's -arc-words and -insert and the
+#	planner's options but -angle-step and -output (set from the output
+#	layer: its resolution and what it writes).
 proc ::fivax::settings::table {} {
     variable Job
     set controllers [dict keys $::fivax::output::Dialects]
@@ -59,9 +62,9 @@ proc ::fivax::settings::pick {settings module} {
 #	layer's resolution of X Y Z and of the rotaries): -tol and -atol are 0
 #	(off) or at least that resolution, -arc-tol at least that of X Y Z (a
 #	finer tolerance can never be met, and chasing it multiplies the work
-#	without bound); -table-offset and -clearance are lengths the machine
-#	file could hold. who prefixes messages. Errors: {FIVAX OPTION VALUE}
-#	naming the option.
+#	without bound); -table-offset, -clearance and -tool-length are
+#	lengths the machine file could hold. who prefixes messages. Errors:
+#	{FIVAX OPTION VALUE} naming the option.
 proc ::fivax::settings::check {settings machine resolution {who fivax_settings}} {
     lassign $resolution mm deg
     foreach {opt res unit what} [list -tol $mm "" "X Y Z" -atol $deg " deg" "the rotary axes" \
@@ -74,7 +77,7 @@ proc ::fivax::settings::check {settings machine resolution {who fivax_settings}}
         }
     }
     set max $::fivax::machine::maxLength
-    foreach opt {-table-offset -clearance} {
+    foreach opt {-table-offset -clearance -tool-length} {
         foreach v [dict get $settings $opt] {
             if {abs($v) > $max} {
                 ::fivax::Fail OPTION VALUE "$who: bad $opt \"[dict get $settings $opt]\":\

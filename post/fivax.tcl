@@ -198,6 +198,8 @@ fivax_handler MOM_start_of_program {
     set fivax(opStart) 0
     set fivax(zeroFeed) 0
     set fivax(cycle) {}
+    set fivax(spindleOn) 0
+    set fivax(cutcomWarned) 0
     fivax_out [$fivax(out) start "[fivax_program_name] - [dict get $machine name]" \
         [fivax_program_name]]
 }
@@ -207,6 +209,7 @@ fivax_handler MOM_start_of_path {
     fivax_emit [$fivax(plan) startPath]
     fivax_out [list [$fivax(out) comment "OPERATION $mom_path_name"]]
     set fivax(opStart) 1
+    set fivax(cutcomWarned) 0
 }
 
 fivax_handler MOM_msys {
@@ -223,16 +226,19 @@ proc MOM_first_tool {} {
 # The tool number must be a positive integer; a length register of 0 (NX's
 # "not set") means the tool number, and so does a negative one (with a
 # warning). The spindle goes up to the tool-change height first; the next
-# operation approaches from there.
+# operation approaches from there. The tool change leaves the spindle
+# stopped (M6 stops it on the controls fivax writes for; Klartext's TOOL
+# CALL takes the speed): the next cut starts it again. Every change is
+# followed by the comment FIVAX TOOL n LENGTH L [RADIUS R], the tool
+# the program was computed for, which the dry run reads.
 fivax_handler MOM_tool_change {
-    global fivax mom_tool_number mom_tool_length mom_tool_length_adjust_register
+    global fivax mom_tool_number mom_tool_length_adjust_register
     if {![info exists mom_tool_number] || ![string is entier -strict $mom_tool_number]
             || $mom_tool_number < 1} {
         error "tool change to tool '[expr {[info exists mom_tool_number] ? $mom_tool_number : ""}]':\
             the tool needs a number of 1 or more (set it in the CAM tool)"
     }
-    set len [dict get $fivax(machine) tool_length]
-    if {[info exists mom_tool_length] && $mom_tool_length > 0} {set len $mom_tool_length}
+    set len [fivax_tool_length "tool $mom_tool_number"]
     set adjust $mom_tool_number
     if {[info exists mom_tool_length_adjust_register]
             && [string is entier -strict $mom_tool_length_adjust_register]} {
@@ -249,14 +255,56 @@ fivax_handler MOM_tool_change {
     $fivax(plan) setTool $len
     $fivax(verify) setTool $len
     fivax_out [$fivax(out) toolChange $mom_tool_number $adjust]
+    fivax_out [list [$fivax(out) comment [fivax_tool_comment $mom_tool_number $len]]]
     set fivax(positioned) 1
+    set fivax(spindleOn) 0
     incr fivax(toolChanges)
+}
+
+# fivax_tool_length --
+#	Returns the length of the tool (what: its name in messages) being
+#	changed to: the CL's (TLDATA, mom_tool_length above 0), else the
+#	setting -tool-length, else, where the written X Y Z do not depend on
+#	it (table-table machines, TCP mode), the machine file's tool_length.
+#	Joint mode on a head machine with neither is an error: its X Y Z
+#	would be computed for a length the machine does not have.
+proc fivax_tool_length {what} {
+    global fivax mom_tool_length
+    if {[info exists mom_tool_length] && [string is double -strict $mom_tool_length]
+            && $mom_tool_length > 0} {
+        return $mom_tool_length
+    }
+    set given [dict get $fivax(settings) -tool-length]
+    if {$given ne ""} {return $given}
+    set machine $fivax(machine)
+    set tcp [dict get $fivax(settings) -tcp]
+    if {$tcp eq ""} {set tcp [dict get $machine tcp]}
+    if {!$tcp && [dict get $machine kind] ne "tabletable"} {
+        error "$what has no length in the CL (no TLDATA; a CUTTER height is\
+            not a gauge length), and joint mode on [dict get $machine name] (a head machine)\
+            computes X Y Z from it: give the tool's length with -tool-length MM"
+    }
+    return [dict get $machine tool_length]
+}
+
+# fivax_tool_comment --
+#	Returns the text FIVAX TOOL n LENGTH L RADIUS R of tool number n of
+#	length len: R from mom_tool_diameter, left out when the CL gives none.
+proc fivax_tool_comment {n len} {
+    global mom_tool_diameter
+    set text [format "FIVAX TOOL %d LENGTH %.3f" $n $len]
+    if {[info exists mom_tool_diameter] && [string is double -strict $mom_tool_diameter]
+            && $mom_tool_diameter > 0} {
+        append text [format " RADIUS %.3f" [expr {$mom_tool_diameter / 2.0}]]
+    }
+    return $text
 }
 
 # Spindle and coolant: the handlers only mark the state when an operation
 # starts (as Post Builder posts do); the first move of the operation
 # writes it from the mom_spindle_* / mom_coolant_* globals, which NX sets
-# at the start of the path whether the events fire or not.
+# at the start of the path whether the events fire or not. No cutting
+# move is written with the spindle stopped (see fivax_cutting).
 fivax_handler MOM_spindle_rpm {
     global fivax
     if {!$fivax(opStart)} {fivax_spindle}
@@ -266,6 +314,7 @@ fivax_handler MOM_spindle_off {
     global fivax
     fivax_emit [$fivax(plan) flush]
     fivax_out [$fivax(out) spindleOff]
+    set fivax(spindleOn) 0
 }
 
 fivax_handler MOM_coolant_on {
@@ -284,18 +333,62 @@ fivax_handler MOM_coolant_off {
 #	unset, nor for a speed of 0 or, with a warning, a negative one or one
 #	below 1 rpm, which would be written S0).
 proc fivax_spindle {} {
-    global fivax mom_spindle_speed mom_spindle_direction mom_spindle_status
-    if {![info exists mom_spindle_speed] || ![string is double -strict $mom_spindle_speed]} return
-    if {$mom_spindle_speed < 1} {
-        if {$mom_spindle_speed != 0} {
-            fivax_warn "spindle speed $mom_spindle_speed rpm is below 1 rpm: not written"
-        }
-        return
-    }
+    global mom_spindle_speed mom_spindle_status
     if {[info exists mom_spindle_status] && $mom_spindle_status eq "OFF"} return
+    set speed [fivax_cl_speed]
+    if {$speed ne ""} {
+        fivax_spindle_start $speed
+    } elseif {[info exists mom_spindle_speed] && [string is double -strict $mom_spindle_speed]
+            && $mom_spindle_speed != 0} {
+        fivax_warn "spindle speed $mom_spindle_speed rpm is below 1 rpm: not written"
+    }
+}
+
+# fivax_cl_speed --
+#	Returns the CL's spindle speed (mom_spindle_speed, rpm), or "" when
+#	there is none or it is below 1 rpm (it would be written S0).
+proc fivax_cl_speed {} {
+    global mom_spindle_speed
+    if {![info exists mom_spindle_speed] || ![string is double -strict $mom_spindle_speed]
+            || $mom_spindle_speed < 1} {
+        return ""
+    }
+    return $mom_spindle_speed
+}
+
+# fivax_spindle_start -- Writes the spindle start at speed (rpm) in mom_spindle_direction.
+proc fivax_spindle_start {speed} {
+    global fivax mom_spindle_direction
     set direction [expr {[info exists mom_spindle_direction] ? $mom_spindle_direction : "CLW"}]
     fivax_emit [$fivax(plan) flush]
-    fivax_out [$fivax(out) spindle $mom_spindle_speed $direction]
+    fivax_out [$fivax(out) spindle $speed $direction]
+    set fivax(spindleOn) 1
+}
+
+# fivax_cutting --
+#	Starts the spindle, if it is stopped, before a cutting move (what:
+#	its name in messages): at the CL's speed (its last one, with a
+#	warning, when the CL stopped the spindle and did not start it again),
+#	else at the machine file's default_rpm (with a warning), else an
+#	error naming the operation.
+proc fivax_cutting {what} {
+    global fivax mom_spindle_status
+    if {$fivax(spindleOn)} return
+    set stopped [expr {[info exists mom_spindle_status] && $mom_spindle_status eq "OFF"}]
+    set speed [fivax_cl_speed]
+    set default [dict get $fivax(machine) default_rpm]
+    if {$speed ne "" && $stopped} {
+        fivax_warn "$what with the spindle stopped (SPINDL/OFF): started again at the CL's\
+            last speed, [format %g $speed] rpm"
+    } elseif {$speed eq "" && $default ne ""} {
+        set speed $default
+        fivax_warn "no spindle speed in the CL: started at the machine's default_rpm,\
+            [format %g $speed] rpm"
+    } elseif {$speed eq ""} {
+        error "$what with the spindle stopped: the CL gives no speed (SPINDL) and the\
+            machine [dict get $fivax(machine) name] has no default_rpm"
+    }
+    fivax_spindle_start $speed
 }
 
 # fivax_coolant -- Writes the coolant start from mom_coolant_* (nothing when off or unset).
@@ -305,6 +398,22 @@ proc fivax_coolant {} {
     fivax_emit [$fivax(plan) flush]
     fivax_out [$fivax(out) coolant [expr {[info exists mom_coolant_mode] ? $mom_coolant_mode : "ON"}]]
 }
+
+# Cutter compensation: fivax writes no G41/G42 (nor Klartext RL/RR). The
+# CL files that program CUTCOM carry the tool centre path (NX "centerline
+# data", Creo OUTPUT_ON_CENTER, SolidWorks CAM's path offset by the tool
+# radius), which is posted as it is: the control's wear compensation is
+# not applied, and the operation's first CUTCOM/LEFT, RIGHT or ON says so.
+fivax_handler MOM_cutcom_on {
+    global fivax mom_cutcom_mode
+    if {$fivax(cutcomWarned)} return
+    set fivax(cutcomWarned) 1
+    set mode [expr {[info exists mom_cutcom_mode] ? $mom_cutcom_mode : "ON"}]
+    fivax_warn "CUTCOM/$mode: fivax writes no cutter compensation (G41/G42): the CL path\
+        is posted as the tool centre path, without the control's wear compensation"
+}
+
+proc MOM_cutcom_off {} {}
 
 # The first motion of an operation: NX names it initial_move (after a tool
 # change) or first_move in mom_motion_event; the motion type and the
@@ -319,10 +428,22 @@ proc fivax_first_move {} {
     if {!$fivax(positioned)} {
         # no tool change before: the position is unknown, start from the top
         fivax_emit [$fivax(plan) flush]
+        if {$fivax(tool) eq ""} {
+            # no tool change at all: the tool in the spindle needs its length too
+            set len [fivax_tool_length "the tool (the CL names none)"]
+            set fivax(tool) [list "" "" $len]
+            $fivax(plan) setTool $len
+            $fivax(verify) setTool $len
+        }
         fivax_out [$fivax(out) safeZ]
         set fivax(positioned) 1
     }
     fivax_spindle
+    if {!$fivax(spindleOn) && [fivax_cl_speed] eq ""
+            && [dict get $fivax(machine) default_rpm] ne ""} {
+        # no speed in the CL: the machine's default, before the approach
+        fivax_cutting "the operation"
+    }
     fivax_coolant
     set event [expr {[info exists mom_motion_event] ? $mom_motion_event : ""}]
     set type [expr {[info exists mom_motion_type] ? $mom_motion_type : ""}]
@@ -353,6 +474,7 @@ proc fivax_arc {} {
     global mom_arc_direction mom_arc_times mom_tool_axis mom_feed_rate
     set feed [expr {[info exists mom_feed_rate] ? $mom_feed_rate : 0.0}]
     if {!($feed > 0)} {fivax_feed_zero $feed arc}
+    fivax_cutting "arc"
     set xyz {0 1 2}
     fivax_emit [$fivax(plan) arc [lmap i $xyz {set mom_prev_mcs_goto($i)}] \
         [lmap i $xyz {set mom_mcs_goto($i)}] [lmap i $xyz {set mom_arc_center($i)}] \
@@ -394,6 +516,7 @@ proc fivax_motion {kind {point ""}} {
     global fivax mom_mcs_goto mom_tool_axis mom_feed_rate
     set feed [expr {[info exists mom_feed_rate] ? $mom_feed_rate : 0.0}]
     if {$kind eq "feed" && !($feed > 0)} {set kind [fivax_feed_zero $feed]}
+    if {$kind eq "feed"} {fivax_cutting "cutting move"}
     if {$point eq ""} {
         set point [list $mom_mcs_goto(0) $mom_mcs_goto(1) $mom_mcs_goto(2)]
     }
@@ -455,6 +578,7 @@ proc fivax_cycle {event} {
 # fivax_hole -- Writes one hole of the active cycle at mom_mcs_goto on mom_tool_axis.
 proc fivax_hole {} {
     global fivax mom_mcs_goto mom_tool_axis
+    fivax_cutting "hole"
     set cycle $fivax(cycle)
     fivax_emit [$fivax(plan) hole [list $mom_mcs_goto(0) $mom_mcs_goto(1) $mom_mcs_goto(2)] \
         [list $mom_tool_axis(0) $mom_tool_axis(1) $mom_tool_axis(2)] $cycle \

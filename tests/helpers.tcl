@@ -68,6 +68,15 @@ proc corpusFile {name} {
     file join $::clCorpus $name
 }
 
+# machineRpm --
+#	Returns the path of the temporary file rpm-<name>.tcl: the shipped
+#	machine file machines/name.tcl with default_rpm 10000, for the real CL
+#	files that have no SPINDL record (most NX ones: no cut without a
+#	speed). The test that calls it removes it (removeFile rpm-<name>.tcl).
+proc machineRpm {name} {
+    makeFile "[viewFile [file join $::fivaxRoot machines $name.tcl]]\ndefault_rpm 10000\n" rpm-$name.tcl
+}
+
 # runReplay --
 #	Runs tools/replay.tcl with args; returns {code output} (output:
 #	standard output and error together). Every NC file a successful run
@@ -279,7 +288,9 @@ proc programProblems {path machineFile {controller ""}} {
 # verifyReplayOutput --
 #	Runs tools/verify.tcl on the NC file a replay with command line args
 #	wrote (-o), against its CL file (the last word), with the replay's
-#	-machine, -msys, -table-offset, -controller and -arc-tol; inside
+#	-machine, -msys, -table-offset, -controller, -arc-tol and -tool-length
+#	(verify's overrides the CL's TLDATA: give it only for CL files with
+#	none); inside
 #	blocks with the replay's -tol and -atol plus 0.001 of output rounding
 #	(-tol 0: not linearised, -atol 0: axis not linearised; not checked). Returns {code output}; {0 {}}
 #	when nothing was written.
@@ -300,7 +311,7 @@ proc verifyReplayOutput {argList} {
     }
     set vargs [list -quiet -machine [dict get $opts -machine] -cl $cl]
     if {[dict exists $opts -msys]} {lappend vargs -msys}
-    foreach key {-table-offset -controller -arc-tol} {
+    foreach key {-table-offset -controller -arc-tol -tool-length} {
         if {[dict exists $opts $key]} {lappend vargs $key [dict get $opts $key]}
     }
     # inside blocks: the replay's tolerances (0: not linearised) plus
