@@ -794,10 +794,22 @@ oo::class create ::fivax::mom::Runtime {
     #	mom_arc_direction is the turning sense about mom_arc_axis: NX-style
     #	CIRCLEs (11 numbers: NX, Makino) turn clockwise about their vector,
     #	the short APT form (6 or 7 numbers: Creo, SolidWorks CAM)
-    #	counter-clockwise (nx-conventions.md 5.4).
+    #	counter-clockwise (nx-conventions.md 5.4). An arc with no position
+    #	before it has no start: its end is reached by a linear move, with
+    #	a warning (a post would take an arc from its end to its end for a
+    #	full circle).
     method Arc {rec circle end} {
         namespace upvar ::fivax::num pi pi
-        set start [expr {$S(point) ne "" ? $S(point) : $end}]
+        if {$S(point) eq ""} {
+            incr S(warnings)
+            my Listing "warning: [::fivax::mom::Where $circle]: CIRCLE with no position before it:\
+                the arc has no start, its end is reached by a linear move"
+            my FeedGlobals $rec
+            my SetPosition $end $S(axis)
+            my Move linear_move
+            return
+        }
+        set start $S(point)
         set center [dict get $circle center]
         set axis [dict get $circle axis]
         set sense [expr {[llength [dict get $circle numbers]] >= 11 ? -1 : 1}]
@@ -829,7 +841,6 @@ oo::class create ::fivax::mom::Runtime {
         my Array mom_arc_center $center
         my Array mom_arc_axis $axis
         set event [expr {$helix && [my Has MOM_helix_move] ? "helix_move" : "circular_move"}]
-        # (the first piece starts at start: the end itself at a first motion)
         set from $start
         foreach piece $pieces {
             lassign $piece p sweep
