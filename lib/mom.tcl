@@ -9,7 +9,12 @@
 #	  MOM_start_of_path; MOM_spindle_rpm / MOM_coolant_on fire after the
 #	  tool change, as user-defined events do;
 #	- the first motion of an operation fires MOM_initial_move (after a tool
-#	  change) or MOM_first_move, with mom_motion_event set to that name;
+#	  change) or MOM_first_move in place of its own event, with
+#	  mom_motion_event naming that event (Post Builder's MOM_first_move
+#	  ends with `catch {MOM_$mom_motion_event}`); a cycle's first hole
+#	  fires it at the hole's R point first, then the hole's event (NX's
+#	  event dictionary: "If the first motion is a cycle move, a
+#	  MOM_initial_move event is generated for the mom_cycle_rapid_to_pos");
 #	- cycles fire their activation event (MOM_drill ...) with mom_cycle_*,
 #	  one MOM_<cycle>_move per hole and MOM_cycle_off;
 #	- arcs and helixes come in pieces by the post's mom_kin_arc_output_mode
@@ -730,9 +735,12 @@ oo::class create ::fivax::mom::Runtime {
     # Move --
     #	Fires MOM_before_motion and the motion event (its name also in
     #	mom_motion_event); the first motion of a path fires MOM_initial_move
-    #	after a tool change, else MOM_first_move, with mom_motion_event set
-    #	to that name (as NX does, inferred from Post Builder's posts, which
-    #	choose rapid or feed there from mom_programmed_feed_rate).
+    #	after a tool change, else MOM_first_move, in place of the motion's
+    #	event, with mom_motion_event naming that event (as NX does, inferred
+    #	from Post Builder's posts: their MOM_first_move calls
+    #	MOM_$mom_motion_event, their MOM_initial_move MOM_rapid_move or
+    #	MOM_linear_move by mom_programmed_feed_rate; were the motion's own
+    #	event fired after either, they would write every first move twice).
     #	(The operations of a motion are the same each time, Has answering
     #	once per name: MoveOps makes them at the first, S(move:...) keeps
     #	them with the number of handlers among them.)
@@ -757,9 +765,7 @@ oo::class create ::fivax::mom::Runtime {
     method MoveOps {event final} {
         set before [my Fires before_motion]
         set handler [my Fires $final]
-        set ops [list v mom_motion_event $event {*}$before]
-        if {$final ne $event} {lappend ops v mom_motion_event $final}
-        lappend ops {*}$handler
+        set ops [list v mom_motion_event $event {*}$before {*}$handler]
         list $ops [expr {([llength $before] + [llength $handler]) / 3}]
     }
 
@@ -788,10 +794,22 @@ oo::class create ::fivax::mom::Runtime {
     #	mom_arc_direction is the turning sense about mom_arc_axis: NX-style
     #	CIRCLEs (11 numbers: NX, Makino) turn clockwise about their vector,
     #	the short APT form (6 or 7 numbers: Creo, SolidWorks CAM)
-    #	counter-clockwise (nx-conventions.md 5.4).
+    #	counter-clockwise (nx-conventions.md 5.4). An arc with no position
+    #	before it has no start: its end is reached by a linear move, with
+    #	a warning (a post would take an arc from its end to its end for a
+    #	full circle).
     method Arc {rec circle end} {
         namespace upvar ::fivax::num pi pi
-        set start [expr {$S(point) ne "" ? $S(point) : $end}]
+        if {$S(point) eq ""} {
+            incr S(warnings)
+            my Listing "warning: [::fivax::mom::Where $circle]: CIRCLE with no position before it:\
+                the arc has no start, its end is reached by a linear move"
+            my FeedGlobals $rec
+            my SetPosition $end $S(axis)
+            my Move linear_move
+            return
+        }
+        set start $S(point)
         set center [dict get $circle center]
         set axis [dict get $circle axis]
         set sense [expr {[llength [dict get $circle numbers]] >= 11 ? -1 : 1}]
@@ -823,7 +841,6 @@ oo::class create ::fivax::mom::Runtime {
         my Array mom_arc_center $center
         my Array mom_arc_axis $axis
         set event [expr {$helix && [my Has MOM_helix_move] ? "helix_move" : "circular_move"}]
-        # (the first piece starts at start: the end itself at a first motion)
         set from $start
         foreach piece $pieces {
             lassign $piece p sweep
@@ -1063,7 +1080,10 @@ oo::class create ::fivax::mom::Runtime {
     #	Sets mom_cycle_rapid_to_pos, _feed_to_pos and _retract_to_pos and
     #	fires MOM_<cycle>_move; the first motion of a path first fires
     #	MOM_initial_move / MOM_first_move at mom_cycle_rapid_to_pos (the
-    #	event dictionary says so of NX).
+    #	event dictionary says so of NX), a rapid positioning: mom_motion_type
+    #	CYCLE, mom_motion_event rapid_move (inferred: Post Builder's
+    #	MOM_first_move calls MOM_$mom_motion_event, which would drill the
+    #	hole twice were it the hole's event).
     method Hole {rec point} {
         set params [dict get $S(cycle) params]
         set t [::fivax::vec::unit $S(axis)]
@@ -1074,7 +1094,7 @@ oo::class create ::fivax::mom::Runtime {
         my Globals [list mom_motion_type CYCLE mom_programmed_feed_rate 0]
         if {$S(firstMove)} {
             my SetPosition $pos(rapid) $S(axis)
-            my Move initial_move
+            my Move rapid_move
         }
         my SetPosition $point $S(axis)
         set event [dict get $S(cycle) event]_move

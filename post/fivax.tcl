@@ -200,6 +200,7 @@ fivax_handler MOM_start_of_program {
     set fivax(cycle) {}
     set fivax(spindleOn) 0
     set fivax(cutcomWarned) 0
+    set fivax(first) {}
     fivax_out [$fivax(out) start "[fivax_program_name] - [dict get $machine name]" \
         [fivax_program_name]]
 }
@@ -415,9 +416,24 @@ fivax_handler MOM_cutcom_on {
 
 proc MOM_cutcom_off {} {}
 
-# The first motion of an operation: NX names it initial_move (after a tool
-# change) or first_move in mom_motion_event; the motion type and the
-# programmed feed tell rapid from feed (a cycle positions to its R plane).
+# The first motion of an operation. NX fires MOM_initial_move for it
+# after a tool change, else MOM_first_move ("This event occurs at the
+# first motion after a tool change event. If the first motion is a cycle
+# move, a MOM_initial_move event is generated for the
+# mom_cycle_rapid_to_pos": NX's event dictionary, Post Builder's
+# POSTBUILD/app/mom_vars_csv.txt). mom_motion_event names the motion's own
+# event (rapid_move, linear_move, circular_move, nurbs_move, drill_move
+# ...): Post Builder's MOM_first_move ends with `catch
+# {MOM_$mom_motion_event}`, while its MOM_initial_move only positions
+# (MOM_rapid_move or MOM_linear_move by mom_programmed_feed_rate) and
+# leaves a cycle's first hole to the hole's own event after it. NX
+# documents no more than that, so the post takes every order: the
+# first-move handler writes the whole motion the event names (a cycle's
+# hole, approached no lower than its R plane; an arc, a helix or a NURBS
+# from its start), and the motion's own event fired after it at the same
+# point is not written twice (fivax_again). A cycle's first motion that
+# names no hole and is neither a hole's R point nor its top (NX's
+# mom_cycle_rapid_to_pos tells) waits for the hole's event.
 fivax_handler MOM_initial_move fivax_first_move
 fivax_handler MOM_first_move fivax_first_move
 
@@ -447,26 +463,134 @@ proc fivax_first_move {} {
     fivax_coolant
     set event [expr {[info exists mom_motion_event] ? $mom_motion_event : ""}]
     set type [expr {[info exists mom_motion_type] ? $mom_motion_type : ""}]
-    if {$event in {rapid_move linear_move circular_move helix_move}} {
-        MOM_$event
-    } elseif {$type in {RAPID CYCLE} || ([info exists mom_programmed_feed_rate]
-            && [string is double -strict $mom_programmed_feed_rate]
-            && $mom_programmed_feed_rate == 0)} {
-        fivax_motion rapid
-    } else {
-        fivax_motion feed
+    if {[llength $fivax(cycle)] && ($type eq "CYCLE" || ([string match *_move $event]
+            && [string range $event 0 end-5] in $fivax(cycleEvents)))} {
+        fivax_first_hole $event
+        return
+    }
+    set kind line
+    switch -- $event {
+        circular_move - helix_move {
+            global mom_prev_mcs_goto
+            if {![info exists mom_prev_mcs_goto(2)]} {
+                error "an arc is the program's first motion: it has no start point\
+                    (program a move to its start before it)"
+            }
+            fivax_motion feed [lmap i {0 1 2} {set mom_prev_mcs_goto($i)}]
+            fivax_arc
+            set kind arc
+        }
+        nurbs_move {
+            global mom_nurbs_points
+            fivax_motion feed [lmap i {0 1 2} {set mom_nurbs_points(0,$i)}]
+            fivax_nurbs
+            set kind nurbs
+        }
+        rapid_move {fivax_motion rapid}
+        linear_move {fivax_motion feed}
+        default {
+            if {$type in {RAPID CYCLE} || ([info exists mom_programmed_feed_rate]
+                    && [string is double -strict $mom_programmed_feed_rate]
+                    && $mom_programmed_feed_rate == 0)} {
+                fivax_motion rapid
+            } else {
+                fivax_motion feed
+            }
+        }
+    }
+    set fivax(first) [list $kind [fivax_goto] $event]
+}
+
+# fivax_first_hole --
+#	Writes the hole a cycle's first motion (event: its mom_motion_event)
+#	carries, or keeps the motion's point for the hole event that follows
+#	when it does not tell its hole (see fivax::motion firstHole).
+proc fivax_first_hole {event} {
+    global fivax mom_tool_axis mom_cycle_rapid_to_pos
+    set rapidPos {}
+    if {[info exists mom_cycle_rapid_to_pos(2)]} {
+        set rapidPos [lmap i {0 1 2} {set mom_cycle_rapid_to_pos($i)}]
+    }
+    set P [fivax_goto]
+    set t [lmap i {0 1 2} {set mom_tool_axis($i)}]
+    set top [fivax::motion firstHole $P $t $fivax(cycle) $rapidPos \
+        [expr {$event eq "[dict get $fivax(cycle) event]_move"}]]
+    if {$top eq ""} {
+        set fivax(first) [list pending $P $event]
+        return
+    }
+    fivax_hole $top
+    set fivax(first) [list hole $top $event]
+}
+
+# fivax_goto -- Returns mom_mcs_goto as a list.
+proc fivax_goto {} {
+    global mom_mcs_goto
+    list $mom_mcs_goto(0) $mom_mcs_goto(1) $mom_mcs_goto(2)
+}
+
+# fivax_again --
+#	Returns 1 when a motion event of kind (line, arc, nurbs, hole or
+#	other) at the current mom_mcs_goto repeats the first motion the
+#	first-move handler wrote (the order in which NX fires the motion's own
+#	event after MOM_initial_move / MOM_first_move): it is not written
+#	again. A hole that the first motion left to this event is drilled
+#	here; an error when it never comes (fivax_settle) or when a curve
+#	comes after a first motion that did not name it reached its end by a
+#	straight move. (A first motion that is a full circle repeated in
+#	pieces ending at the same point cannot be told from its own event
+#	fired again: its second turn is not written.)
+proc fivax_again {kind} {
+    global fivax mom_tool_axis
+    if {![llength $fivax(first)]} {return 0}
+    lassign $fivax(first) first P event
+    set here [fivax_goto]
+    if {$first eq "pending" && $kind eq "hole"
+            && [fivax::motion holeOfFirst $P [lmap i {0 1 2} {set mom_tool_axis($i)}] \
+                $fivax(cycle) $here]} {
+        set fivax(first) {}
+        return 0
+    }
+    fivax_settle
+    if {![fivax::motion samePoint $here $P]} {return 0}
+    if {$first eq "line" && $kind in {arc nurbs} && $event ni {rapid_move linear_move}} {
+        error "the operation's first motion came as a straight move to this point (mom_motion_event\
+            '$event'), then as MOM_[expr {$kind eq "arc" ? "circular" : "nurbs"}]_move:\
+            the curve cannot be written (NX should name the motion in mom_motion_event)"
+    }
+    expr {$first eq $kind}
+}
+
+# fivax_settle --
+#	Ends the first-move state at the end of a cycle or operation: an error
+#	when a cycle's first motion left its hole to an event that never came.
+proc fivax_settle {} {
+    global fivax
+    lassign $fivax(first) first P event
+    set fivax(first) {}
+    if {$first eq "pending"} {
+        error "the cycle's first motion (to [join $P ", "]) named no hole (mom_motion_event\
+            '$event') and no hole event followed it there: the first hole cannot be placed"
     }
 }
 
-fivax_handler MOM_rapid_move {fivax_motion rapid}
+fivax_handler MOM_rapid_move {
+    if {![fivax_again line]} {fivax_motion rapid}
+}
 
-fivax_handler MOM_linear_move {fivax_motion feed}
+fivax_handler MOM_linear_move {
+    if {![fivax_again line]} {fivax_motion feed}
+}
 
 # Arcs (CIRCLE + GOTO) and helixes go to the planner, which writes them as
 # the control's arcs where they stay arcs in the blocks' frame, else as
 # points within the arc tolerance.
-fivax_handler MOM_circular_move fivax_arc
-fivax_handler MOM_helix_move fivax_arc
+fivax_handler MOM_circular_move {
+    if {![fivax_again arc]} fivax_arc
+}
+fivax_handler MOM_helix_move {
+    if {![fivax_again arc]} fivax_arc
+}
 
 # fivax_arc -- Hands the points of the current arc piece to the planner.
 proc fivax_arc {} {
@@ -487,7 +611,9 @@ proc fivax_arc {} {
 
 # NURBS (NX's spline motion, mom_kin_nurbs_output_type BSPLINE): the
 # curve's points within the arc tolerance go to the planner.
-fivax_handler MOM_nurbs_move fivax_nurbs
+fivax_handler MOM_nurbs_move {
+    if {![fivax_again nurbs]} fivax_nurbs
+}
 
 # fivax_nurbs -- Hands the points of the current NURBS (mom_nurbs_*) to the planner.
 proc fivax_nurbs {} {
@@ -507,7 +633,10 @@ proc fivax_nurbs {} {
     }
 }
 
-fivax_handler MOM_gohome_move {fivax_motion rapid}
+fivax_handler MOM_gohome_move {
+    fivax_again other
+    fivax_motion rapid
+}
 
 # fivax_motion --
 #	Hands a CL point (default: the current mom_mcs_goto) with the current
@@ -555,10 +684,13 @@ proc fivax_feed_zero {feed {what move}} {
 # Drilling: the activation event keeps the cycle's data; each hole goes to
 # the planner, which writes the control's canned cycle where the output
 # layer has it and the tool is along the machine's Z, else moves.
-foreach fivax_event {drill drill_dwell drill_deep drill_break_chip tap bore bore_dwell
-        bore_drag bore_no_drag bore_back bore_manual} {
+set fivax(cycleEvents) {drill drill_dwell drill_deep drill_break_chip tap bore bore_dwell
+    bore_drag bore_no_drag bore_back bore_manual}
+foreach fivax_event $fivax(cycleEvents) {
     fivax_handler MOM_$fivax_event [list fivax_cycle $fivax_event]
-    fivax_handler MOM_${fivax_event}_move fivax_hole
+    fivax_handler MOM_${fivax_event}_move {
+        if {![fivax_again hole]} {fivax_hole [fivax_goto]}
+    }
 }
 unset fivax_event
 
@@ -575,18 +707,19 @@ proc fivax_cycle {event} {
         delay [expr {[info exists mom_cycle_delay] ? $mom_cycle_delay : 0.0}] rate $rate]
 }
 
-# fivax_hole -- Writes one hole of the active cycle at mom_mcs_goto on mom_tool_axis.
-proc fivax_hole {} {
-    global fivax mom_mcs_goto mom_tool_axis
+# fivax_hole -- Writes one hole of the active cycle, its top at top on mom_tool_axis.
+proc fivax_hole {top} {
+    global fivax mom_tool_axis
     fivax_cutting "hole"
     set cycle $fivax(cycle)
-    fivax_emit [$fivax(plan) hole [list $mom_mcs_goto(0) $mom_mcs_goto(1) $mom_mcs_goto(2)] \
+    fivax_emit [$fivax(plan) hole $top \
         [list $mom_tool_axis(0) $mom_tool_axis(1) $mom_tool_axis(2)] $cycle \
         [$fivax(out) canCycle [dict get $cycle event]] [fivax_where]]
 }
 
 fivax_handler MOM_cycle_off {
     global fivax
+    fivax_settle
     fivax_emit [$fivax(plan) flush]
     fivax_out [$fivax(out) cycleOff]
     set fivax(cycle) {}
@@ -625,6 +758,7 @@ proc fivax_emit {moves} {
 
 fivax_handler MOM_end_of_path {
     global fivax
+    fivax_settle
     fivax_emit [$fivax(plan) endPath]
 }
 

@@ -98,9 +98,11 @@ proc ::nxhost::fire {s event} {
 #	Fires one motion of session s: the tip point P and axis t (the MCS),
 #	type (RAPID, CUT, CYCLE ...), programmed feed (0: rapid), event (the
 #	motion's event; for the first motion of an operation initial_move or
-#	first_move, which also goes into mom_motion_event). Sets the mom_prev_*
-#	of the previous motion first, then MOM_before_motion.
-proc ::nxhost::motion {s event type P t feed} {
+#	first_move), named what goes into mom_motion_event (default: event;
+#	for a first motion NX may name the motion's own event there, e.g.
+#	drill_move, circular_move, nurbs_move). Sets the mom_prev_* of the
+#	previous motion first, then MOM_before_motion.
+proc ::nxhost::motion {s event type P t feed {named ""}} {
     upvar #0 $s S
     if {[info exists S(P)]} {
         globalArray $s mom_prev_mcs_goto $S(P)
@@ -111,8 +113,21 @@ proc ::nxhost::motion {s event type P t feed} {
     globalArray $s mom_mcs_goto $P
     globalArray $s mom_pos $P
     globalArray $s mom_tool_axis $t
-    vars $s [list mom_motion_event $event mom_motion_type $type \
+    if {$named eq ""} {set named $event}
+    vars $s [list mom_motion_event $named mom_motion_type $type \
         mom_programmed_feed_rate $feed mom_feed_rate $feed]
+    fire $s before_motion
+    fire $s $event
+}
+
+# ::nxhost::again --
+#	Fires the motion's own event (MOM_before_motion, then MOM_<event>,
+#	event also in mom_motion_event) with the globals of the motion just
+#	fired unchanged: the order in which a first motion's MOM_initial_move
+#	or MOM_first_move is followed by the motion's event, as Post Builder
+#	posts' MOM_initial_move (a positioning move only) expect.
+proc ::nxhost::again {s event} {
+    vars $s [list mom_motion_event $event]
     fire $s before_motion
     fire $s $event
 }

@@ -18,6 +18,45 @@ namespace eval ::fivax::motion {
     variable peckClearance 0.5
     # Cycles that expand into moves: feed out (bore) or rapid out.
     variable expandable {drill drill_dwell drill_deep drill_break_chip bore bore_dwell}
+    # Two CL points closer than this (mm) are the same point.
+    variable samePoint 1e-6
+    namespace export firstHole holeOfFirst samePoint
+}
+
+# ::fivax::motion::firstHole --
+#	Returns the top of the hole that an operation's first motion (tip P,
+#	axis t, CL frame) carries while the cycle dict cycle (see hole) is
+#	active, or "" when the motion does not tell. rapidPos is NX's
+#	mom_cycle_rapid_to_pos ("" when unset), named 1 when the motion's
+#	mom_motion_event names the cycle's hole event. P is the hole's R
+#	point when it is rapidPos (NX: "If the first motion is a cycle move,
+#	a MOM_initial_move event is generated for the mom_cycle_rapid_to_pos",
+#	Post Builder's mom_vars_csv.txt), the top when rapidPos is its R
+#	point, else the top when named (a hole event's point is the hole's
+#	top).
+proc ::fivax::motion::firstHole {P t cycle rapidPos named} {
+    set up [::fivax::vec::scale [dict get $cycle rapid] [::fivax::vec::unit $t]]
+    if {[llength $rapidPos] == 3} {
+        if {[samePoint $P $rapidPos]} {return [::fivax::vec::sub $P $up]}
+        if {[samePoint [::fivax::vec::add $P $up] $rapidPos]} {return $P}
+    }
+    if {$named} {return $P}
+    return ""
+}
+
+# ::fivax::motion::holeOfFirst --
+#	Returns 1 when top (a hole event's point) is the hole of an
+#	operation's first motion at P (axis t, cycle as for firstHole) that
+#	did not tell its hole: P is the top or the top's R point.
+proc ::fivax::motion::holeOfFirst {P t cycle top} {
+    set r [::fivax::vec::add $top [::fivax::vec::scale [dict get $cycle rapid] [::fivax::vec::unit $t]]]
+    expr {[samePoint $P $top] || [samePoint $P $r]}
+}
+
+# ::fivax::motion::samePoint -- Returns 1 when the CL points a and b coincide.
+proc ::fivax::motion::samePoint {a b} {
+    variable samePoint
+    expr {[::fivax::vec::dist $a $b] < $samePoint}
 }
 
 oo::define ::fivax::motion::Planner {

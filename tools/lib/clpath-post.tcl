@@ -70,8 +70,8 @@ proc MOM_msys {} {
     }
 }
 
-proc MOM_initial_move {} {clpath_point [expr {$::mom_motion_type ne "CUT"}]}
-proc MOM_first_move {} {clpath_point [expr {$::mom_motion_type ne "CUT"}]}
+proc MOM_initial_move {} clpath_first
+proc MOM_first_move {} clpath_first
 proc MOM_rapid_move {} {clpath_point 1}
 proc MOM_linear_move {} {clpath_point 0}
 proc MOM_from_move {} {clpath_point 1}
@@ -94,6 +94,25 @@ proc MOM_nurbs_move {} {
         list $::mom_nurbs_points($i,0) $::mom_nurbs_points($i,1) $::mom_nurbs_points($i,2)}]
     set curve [fivax::curve nurbs [expr {$::mom_nurbs_order - 1}] $knots $points]
     foreach P [fivax::curve nurbsPoints $curve $::clpath_tol] {clpath_point 0 $P}
+}
+
+# clpath_first --
+#	An operation's first motion: the motion mom_motion_event names (the
+#	runtime fires MOM_initial_move / MOM_first_move in place of its
+#	event), an arc or NURBS from its start (the CL point before it, the
+#	last of the previous operation), else the point.
+proc clpath_first {} {
+    switch -- $::mom_motion_event {
+        circular_move {
+            clpath_point 0 [clpath_vec mom_prev_mcs_goto]
+            MOM_circular_move
+        }
+        nurbs_move {
+            clpath_point 0 [lmap j {0 1 2} {set ::mom_nurbs_points(0,$j)}]
+            MOM_nurbs_move
+        }
+        default {clpath_point [expr {$::mom_motion_type ne "CUT"}]}
+    }
 }
 
 # clpath_hole -- A cycle's hole: rapid to the R plane, feed to the bottom, rapid out.
