@@ -85,6 +85,8 @@ namespace eval ::fivax::motion {
         {-output any {} DICT "what the output dialect writes (the output Writer's capabilities)"}
         {-angle-step {real min 0} 0 DEG
             "output resolution of the rotary words: rotaries are rounded to it before X Y Z are computed (0: exact)"}
+        {-length-step {real min 0} 0 MM
+            "output resolution of the X Y Z words, a power of ten: the linearisation measures X Y Z rounded to it, as written (0: exact)"}
     }
 }
 
@@ -128,6 +130,7 @@ oo::class create ::fivax::motion::Planner {
         # -atol 0: no check of the tool axis between blocks
         set S(atolCheck) [expr {$S(atol) > 0 ? [::fivax::num::rad $S(atol)] : Inf}]
         set S(swingRad) [::fivax::num::rad $S(swing)]
+        my WrittenResolution
         # the cost of a retract (see Relax)
         namespace upvar ::fivax::motion retractCost retractCost
         set S(retractCost) $retractCost
