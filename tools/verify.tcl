@@ -254,9 +254,12 @@ proc ::verifytool::Cutting {blk joints P t where {match Match}} {
         # joint mode: the control interpolates the joints linearly (in TCP
         # mode and in a work plane it keeps the tip on the line itself)
         lassign $S(prev) j0 P0 t0 u0
-        set seg [Segment $u0 $S(endU) $P0 $P]
-        if {[llength $seg]} {lassign $seg P0 P1 t0 t1} else {lassign [list $P $t] P1 t1}
-        set inside [$S(checker) interior $j0 $joints $P0 $P1 $t0 $t1]
+        set segs [Segments $u0 $S(endU) $P0 $P]
+        if {![llength $segs]} {set segs [list [list $P0 $P $t0 $t]]}
+        foreach seg $segs {
+            set in [$S(checker) interior $j0 $joints {*}$seg]
+            if {![llength $inside] || [lindex $in 0] < [lindex $inside 0]} {set inside $in}
+        }
     }
     if {[llength $inside]} {
         # (arcs apart: the post measures the inside of joint-space blocks)
@@ -285,27 +288,37 @@ proc ::verifytool::LimitRetract {u0 u1} {
     return 1
 }
 
-# ::verifytool::Segment --
-#	Returns {A B tA tB}, the CL segment (ends and axes) a joint-space
-#	block from CL place u0 to u1 (see Place), tips P0 to P1, lies on: the
-#	one holding the middle of the two places, as the post splits a CL
-#	move only along its segment (the block ends themselves may match just
-#	across a CL point). {} when either end has no place or is farther
-#	than -tol from that segment (a block across several): the inside is
-#	then measured against the straight line between the block ends.
-proc ::verifytool::Segment {u0 u1 P0 P1} {
+# ::verifytool::Segments --
+#	Returns the CL segments ({A B tA tB}: ends and axes) a joint-space
+#	block from CL place u0 to u1 (see Place), tips P0 to P1, may lie on,
+#	its inside being measured against the one it fits best: the segment
+#	holding the middle of the two places, as the post splits a CL move
+#	only along its segment (the block ends themselves may match just
+#	across a CL point); for a block shorter than 2 -tol, where the
+#	rounding of its ends leaves that in doubt, also the segments either
+#	side. Only segments both ends lie within -tol of; none when either
+#	end has no place (the inside is then measured against the straight
+#	line between the block ends).
+proc ::verifytool::Segments {u0 u1 P0 P1} {
     variable S
     if {$u0 eq "" || $u1 eq ""} {return {}}
     set n [llength $S(clPoints)]
     if {$n < 2} {return {}}
-    set i [expr {min($n - 2, max(0, int(floor(0.5 * ($u0 + $u1)))))}]
-    lassign [lindex $S(clPoints) $i] A tA
-    lassign [lindex $S(clPoints) [expr {$i + 1}]] B tB
     set tol [dict get $S(opts) -tol]
-    foreach P [list $P0 $P1] {
-        if {[lindex [::fivax::clpath::Project $A $B $P] 0] > $tol} {return {}}
+    set mid [expr {int(floor(0.5 * ($u0 + $u1)))}]
+    set near [list $mid]
+    if {[::fivax::vec::dist $P0 $P1] < 2.0 * $tol} {lappend near [expr {$mid - 1}] [expr {$mid + 1}]}
+    set out {}
+    foreach i $near {
+        set i [expr {min($n - 2, max(0, $i))}]
+        lassign [lindex $S(clPoints) $i] A tA
+        lassign [lindex $S(clPoints) [expr {$i + 1}]] B tB
+        if {[lindex [::fivax::clpath::Project $A $B $P0] 0] <= $tol
+                && [lindex [::fivax::clpath::Project $A $B $P1] 0] <= $tol} {
+            lappend out [list $A $B $tA $tB]
+        }
     }
-    list $A $B $tA $tB
+    return $out
 }
 
 # ::verifytool::Place --
