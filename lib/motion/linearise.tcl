@@ -25,10 +25,10 @@
 
 oo::define ::fivax::motion::Planner {
     # Returns the point records after a up to and including b such that
-    # the linear joint interpolation between consecutive ones keeps the
-    # tip within -tol of their straight segment and the axis within -atol
-    # of the great circle of their actual axes (act), checked at the
-    # quarter points. An error e splits the move into about sqrt(e / tol)
+    # the linear joint interpolation between consecutive ones, with X Y Z
+    # as written (Written), keeps the tip within -tol of their straight
+    # segment and the axis within -atol of the great circle of their
+    # actual axes (act), checked at the quarter points. An error e splits the move into about sqrt(e / tol)
     # pieces (the error of a smooth move shrinks with the square of its
     # length), each checked in turn, at most maxDepth levels deep and into
     # at most maxPieces pieces in all (a move of absurd length would

@@ -243,7 +243,8 @@ oo::class create ::fivax::motion::Planner {
     # written), inserted (linearisation points), retracts, holds (CL
     # points posted with the azimuth held in the singular cone), swings
     # (azimuth swings above -swing between close points), unresolved
-    # (moves still out of tolerance after the deepest split), forced
+    # (cutting moves whose quarter points, X Y Z as written, are still
+    # beyond -tol or -atol after the deepest split), forced
     # (window commits before the merge).
     # dwells (cutting moves that only turn the rotaries with the tip at
     # rest) and dwellTurn (deg), clamps (inverse-time feeds clamped at the
