@@ -2,7 +2,10 @@
 #	Checks an NC program on a virtual machine: reads every block (fanuc or
 #	linuxcnc text, from fivax or another post), maps it back by forward
 #	kinematics (never the inverse) and reports per operation the tool tip
-#	and axis deviation at block ends (against the CL path with -cl) and
+#	and axis deviation at block ends (with -cl: the tip's distance from
+#	the CL path, at most the post's figure, its distance from the CL
+#	point it aimed at, by the tip's error along the path: up to 0.0002
+#	mm on the bundled and corpus files) and
 #	inside joint-space moves (the controller's linear joint interpolation
 #	at the quarter points against the straight CL segment the move lies
 #	on with -cl, as the post measures it; without, against the straight
