@@ -21,8 +21,8 @@ namespace eval ::fivax::settings {
 #	Returns the option table of a posting job: -machine, -controller (the
 #	output layer's dialects; default: the machine's), -arc-tol,
 #	-tool-length, -log, the output layer's -arc-words and -insert and the
-#	planner's options but -angle-step and -output (set from the output
-#	layer: its resolution and what it writes).
+#	planner's options but -angle-step, -length-step and -output (set from
+#	the output layer: its resolution and what it writes).
 proc ::fivax::settings::table {} {
     variable Job
     set controllers [dict keys $::fivax::output::Dialects]
@@ -31,7 +31,7 @@ proc ::fivax::settings::table {} {
             "controller dialect: [join $controllers {, }] (default: the machine's)"]] \
         [lrange $Job 1 end] \
         [lmap opt {-arc-words -insert} {lsearch -inline -index 0 $::fivax::output::Options $opt}] \
-        [::fivax::opts::drop $::fivax::motion::Options {-angle-step -output}]
+        [::fivax::opts::drop $::fivax::motion::Options {-angle-step -length-step -output}]
 }
 
 # ::fivax::settings::parse --

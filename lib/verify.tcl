@@ -187,7 +187,7 @@ oo::class create ::fivax::verify::Checker {
         array set S {X {} Y {} Z {} q1 {} q2 {} motion {} mode direct F {} prev {}
             cycle 0 return 98 initial {} bottom {} R {} tcp 0 frame {} plane 17 cc {}
             checked 0 segments 0 maxPos 0.0 maxAng 0.0 maxMidPos 0.0 maxMidAng 0.0
-            limitViolations 0 worst {} worstMid {}}
+            limitViolations 0 worst {} worstMid {} lastMotion {} rapidsAfterCut 0}
         my setTool [dict get $machine tool_length]
     }
 
@@ -696,7 +696,8 @@ oo::class create ::fivax::verify::Checker {
     # cannot exceed the largest deviation found so far (which is all the
     # summary keeps).
     method block {line move} {
-        lassign [my Read $line 0] joints pose space limit arc hole
+        lassign [my Read $line 0] joints pose space limit arc hole - moved
+        my countRapid $pose $moved $hole
         # the machine X Y Z (when known) and the rotaries read outside
         # their limits (the usual block, within the travel's bounds and
         # the rotaries' limits, needs no machine checkLimits)
@@ -748,13 +749,28 @@ oo::class create ::fivax::verify::Checker {
         set S(prev) [list $joints $P $t $dp $ea]
     }
 
+    # Counts the block just read (its pose, moved axes and hole, see read)
+    # when it is a rapid after cutting: a G0 block moving an axis right
+    # after a cutting block (G1 G2 G3; a canned cycle's hole is none).
+    # Blocks that move no axis or end at an unknown pose neither count nor
+    # end the run. The post's check and tools/verify.tcl both count so.
+    # Returns 1 when counted.
+    method countRapid {pose moved hole} {
+        if {$pose eq "" || ![llength $moved]} {return 0}
+        set counted [expr {$S(motion) eq "0" && $S(lastMotion) in {1 2 3}}]
+        incr S(rapidsAfterCut) $counted
+        set S(lastMotion) [expr {$hole ? 0 : $S(motion)}]
+        return $counted
+    }
+
     # Returns a dict: checked (CL points), segments, maxPos (mm), maxAng
     # (deg) at the CL points, maxMidPos (mm), maxMidAng (deg) inside
     # cutting moves, limitViolations, worst and worstMid (FILE:LINE of the
-    # largest errors).
+    # largest errors), rapidsAfterCut (see countRapid).
     method summary {} {
         dict create checked $S(checked) segments $S(segments) maxPos $S(maxPos) \
             maxAng $S(maxAng) maxMidPos $S(maxMidPos) maxMidAng $S(maxMidAng) \
-            limitViolations $S(limitViolations) worst $S(worst) worstMid $S(worstMid)
+            limitViolations $S(limitViolations) worst $S(worst) worstMid $S(worstMid) \
+            rapidsAfterCut $S(rapidsAfterCut)
     }
 }

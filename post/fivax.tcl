@@ -190,7 +190,7 @@ fivax_handler MOM_start_of_program {
             moves with rotary motion get the combined feed of all axes (-feed dpm)"
     }
     set fivax(plan) [fivax::motion create $machine -angle-step [$fivax(out) angleStep] \
-        -output [$fivax(out) capabilities] {*}$planOptions]
+        -length-step [lindex [$fivax(out) resolution] 0] -output [$fivax(out) capabilities] {*}$planOptions]
     set fivax(verify) [fivax::verify create $machine {*}[fivax::settings pick $fivax(settings) verify]]
     set fivax(tool) {}
     set fivax(toolChanges) 0

@@ -494,8 +494,8 @@ proc ::replay::Summary {stats} {
             $segments $maxMidPos $maxMidAng $limitViolations]
     }
     if {[info exists inserted]} {
-        Say [format "fivax: %d points inserted, %d retracts, rotary travel %.3f deg; %d azimuth holds, %d singular swings, %d moves left out of tolerance" \
-            $inserted $retracts $travel $holds $swings $unresolved]
+        Say [format "fivax: %d points inserted, %d limit retracts, %d rapids after cutting, rotary travel %.3f deg; %d azimuth holds, %d singular swings, %d moves left out of tolerance" \
+            $inserted $retracts $rapidsAfterCut $travel $holds $swings $unresolved]
         Say [format "fivax: %d tool changes; %d dwell swings (rotaries turning %.3f deg with the tip in place); %d inverse-time feeds clamped at the machine's maximum (worst %.2f times slower than programmed)" \
             $toolChanges $dwells $dwellTurn $clamps $slowdown]
     }

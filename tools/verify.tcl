@@ -2,10 +2,16 @@
 #	Checks an NC program on a virtual machine: reads every block (fanuc or
 #	linuxcnc text, from fivax or another post), maps it back by forward
 #	kinematics (never the inverse) and reports per operation the tool tip
-#	and axis deviation at block ends (against the CL path with -cl) and
+#	and axis deviation at block ends (with -cl: the tip's distance from
+#	the CL path, at most the post's figure, its distance from the CL
+#	point it aimed at, by the tip's error along the path: up to 0.0002
+#	mm on the bundled and corpus files) and
 #	inside joint-space moves (the controller's linear joint interpolation
-#	against the straight line between the block ends), rotary travel,
-#	retracts, rotary values outside the limits, feed anomalies and
+#	at the quarter points against the straight CL segment the move lies
+#	on with -cl, as the post measures it; without, against the straight
+#	line between the block ends), rotary travel,
+#	rapids after cutting and (with -cl) limit retracts, as the post
+#	counts them, rotary values outside the limits, feed anomalies and
 #	canned-cycle holes not drilled along the tool axis, and names the
 #	worst NC line. Exits 1 when a figure exceeds the tolerances, a value
 #	is outside the limits, a feed is wrong or a hole is drilled off the
@@ -63,8 +69,9 @@ proc ::verifytool::ParseArgs {argv} {
 # ::verifytool::NewOp -- Returns the statistics dict of a new operation name.
 proc ::verifytool::NewOp {name} {
     dict create name $name blocks 0 feeds 0 moves 0 endPos 0.0 endPosAt {} endAng 0.0 \
-        endAngAt {} midPos 0.0 midPosAt {} midAng 0.0 midAngAt {} travel {0.0 0.0} \
-        retracts 0 limits 0 limitAt {} feedIssues 0 feedAt {} drills 0 drillAt {}
+        endAngAt {} midPos 0.0 midPosAt {} midAng 0.0 midAngAt {} arcPos 0.0 arcPosAt {} \
+        arcAng 0.0 arcAngAt {} travel {0.0 0.0} \
+        rapids 0 limitRetracts 0 limits 0 limitAt {} feedIssues 0 feedAt {} drills 0 drillAt {}
 }
 
 # ::verifytool::Max --
@@ -87,7 +94,7 @@ proc ::verifytool::Run {opts path machine} {
     variable S
     array unset S
     array set S [list opts $opts path $path machine $machine ops {} op [NewOp program] \
-        opIndex -1 clPoints {} cursor 0 prev {} prevMotion "" rows {} warnings {} \
+        opIndex -1 clPoints {} cursor 0 prev {} cutU "" breakU "" rows {} warnings {} \
         names [lmap a [dict get $machine chain] {dict get $a name}] \
         rollover [lmap a [dict get $machine chain] {dict get $a rollover}] cl {}]
     set S(checker) [::fivax::verify create $machine -table-offset [dict get $opts -table-offset] \
@@ -145,8 +152,14 @@ proc ::verifytool::Line {line where n} {
     dict incr S(op) moves
     Travel $joints
     set motion [dict get $blk motion]
-    if {$motion == 0 && $S(prevMotion) in {1 2 3}} {dict incr S(op) retracts}
+    if {[$S(checker) countRapid $pose [dict get $blk moved] [dict get $blk hole]]} {
+        dict incr S(op) rapids
+        # a break in the cut, from the CL place of its last cutting block
+        set S(breakU) $S(cutU)
+    }
     set figures {{} {} {} {}}
+    # the place on the CL path of this block's end (see Place)
+    set S(endU) ""
     if {[dict get $blk hole]} {
         # a canned cycle's hole, checked at its bottom; its motions are
         # the controller's, and the tool ends on the return level
@@ -159,16 +172,18 @@ proc ::verifytool::Line {line where n} {
         }
         set S(prev) {}
         set figures [Cutting $blk $joints $P $t $where Bottom]
-        set S(prevMotion) 0
         lappend S(rows) [list $n [dict get $S(op) name] 1 $joints $P $t {*}$figures \
             [dict get $blk F] [dict get $blk mode]]
         return
     }
-    if {$motion in {1 2 3}} {set figures [Cutting $blk $joints $P $t $where]}
+    if {$motion in {1 2 3}} {
+        set figures [Cutting $blk $joints $P $t $where]
+    } elseif {[llength $S(clPoints)]} {
+        set S(endU) [Place $P $t]
+    }
     lappend S(rows) [list $n [dict get $S(op) name] $motion $joints $P $t {*}$figures \
         [dict get $blk F] [dict get $blk mode]]
-    set S(prev) [list $joints $P $t]
-    set S(prevMotion) $motion
+    set S(prev) [list $joints $P $t $S(endU)]
 }
 
 # ::verifytool::StartOp --
@@ -180,7 +195,8 @@ proc ::verifytool::StartOp {name} {
     set S(op) [NewOp $name]
     incr S(opIndex)
     set S(prev) {}
-    set S(prevMotion) ""
+    set S(cutU) ""
+    set S(breakU) ""
     set S(cursor) 0
     set S(clPoints) {}
     set len [dict get $S(opts) -tool-length]
@@ -223,30 +239,102 @@ proc ::verifytool::Cutting {blk joints P t where {match Match}} {
     }
     set out {{} {} {} {}}
     set inside {}
-    if {[dict get $blk arc] ne ""} {
-        set inside [ArcInside [dict get $blk arc] [dict get $blk words]]
-    } elseif {$S(prev) ne "" && [dict get $blk space] eq "joint" && $joints ne ""
-            && [lindex $S(prev) 0] ne ""} {
-        # joint mode: the control interpolates the joints linearly (in TCP
-        # mode and in a work plane it keeps the tip on the line itself)
-        lassign $S(prev) j0 P0 t0
-        set inside [$S(checker) interior $j0 $joints $P0 $P $t0 $t]
-    }
-    if {[llength $inside]} {
-        lassign $inside midPos midAng
-        Max S(op) midPos $midPos $where
-        Max S(op) midAng $midAng $where
-        lset out 2 $midPos
-        lset out 3 $midAng
-    }
+    # (an arc is followed along the CL path from the cursor at its start)
+    set arc [dict get $blk arc]
+    if {$arc ne ""} {set inside [ArcInside $arc [dict get $blk words]]}
     if {[llength $S(clPoints)]} {
-        lassign [$match $P $t] endPos endAng
+        lassign [$match $P $t] endPos endAng S(endU)
         Max S(op) endPos $endPos $where
         Max S(op) endAng $endAng $where
         lset out 0 $endPos
         lset out 1 $endAng
+        if {[LimitRetract $S(breakU) $S(endU)]} {dict incr S(op) limitRetracts}
+        set S(breakU) ""
+        set S(cutU) $S(endU)
+    }
+    if {$arc eq "" && $S(prev) ne "" && [dict get $blk space] eq "joint" && $joints ne ""
+            && [lindex $S(prev) 0] ne ""} {
+        # joint mode: the control interpolates the joints linearly (in TCP
+        # mode and in a work plane it keeps the tip on the line itself)
+        lassign $S(prev) j0 P0 t0 u0
+        set segs [Segments $u0 $S(endU) $P0 $P]
+        if {![llength $segs]} {set segs [list [list $P0 $P $t0 $t]]}
+        foreach seg $segs {
+            set in [$S(checker) interior $j0 $joints {*}$seg]
+            if {![llength $inside] || [lindex $in 0] < [lindex $inside 0]} {set inside $in}
+        }
+    }
+    if {[llength $inside]} {
+        # (arcs apart: the post measures the inside of joint-space blocks)
+        set key [expr {$arc ne "" ? "arc" : "mid"}]
+        lassign $inside midPos midAng
+        Max S(op) ${key}Pos $midPos $where
+        Max S(op) ${key}Ang $midAng $where
+        lset out 2 $midPos
+        lset out 3 $midAng
     }
     return $out
+}
+
+# ::verifytool::LimitRetract --
+#	Returns 1 when a break in the cut (rapids after cutting) from CL place
+#	u0 resumes cutting at CL place u1 with no CL point reached by a RAPID
+#	in between nor at u1: the CL cuts on there, so the break is the
+#	post's (a retract where no cutting move could continue, the post's
+#	"limit retracts"). 0 when either place is unknown.
+proc ::verifytool::LimitRetract {u0 u1} {
+    variable S
+    if {$u0 eq "" || $u1 eq ""} {return 0}
+    for {set k [expr {int(floor($u0)) + 1}]} {$k <= round($u1)} {incr k} {
+        if {[lindex $S(clPoints) $k 3]} {return 0}
+    }
+    return 1
+}
+
+# ::verifytool::Segments --
+#	Returns the CL segments ({A B tA tB}: ends and axes) a joint-space
+#	block from CL place u0 to u1 (see Place), tips P0 to P1, may lie on,
+#	its inside being measured against the one it fits best: the segment
+#	holding the middle of the two places, as the post splits a CL move
+#	only along its segment (the block ends themselves may match just
+#	across a CL point); for a block shorter than 2 -tol, where the
+#	rounding of its ends leaves that in doubt, also the segments either
+#	side. Only segments both ends lie within -tol of; none when either
+#	end has no place (the inside is then measured against the straight
+#	line between the block ends).
+proc ::verifytool::Segments {u0 u1 P0 P1} {
+    variable S
+    if {$u0 eq "" || $u1 eq ""} {return {}}
+    set n [llength $S(clPoints)]
+    if {$n < 2} {return {}}
+    set tol [dict get $S(opts) -tol]
+    set mid [expr {int(floor(0.5 * ($u0 + $u1)))}]
+    set near [list $mid]
+    if {[::fivax::vec::dist $P0 $P1] < 2.0 * $tol} {lappend near [expr {$mid - 1}] [expr {$mid + 1}]}
+    set out {}
+    foreach i $near {
+        set i [expr {min($n - 2, max(0, $i))}]
+        lassign [lindex $S(clPoints) $i] A tA
+        lassign [lindex $S(clPoints) [expr {$i + 1}]] B tB
+        if {[lindex [::fivax::clpath::Project $A $B $P0] 0] <= $tol
+                && [lindex [::fivax::clpath::Project $A $B $P1] 0] <= $tol} {
+            lappend out [list $A $B $tA $tB]
+        }
+    }
+    return $out
+}
+
+# ::verifytool::Place --
+#	Returns the place (segment index plus fraction) on the CL path of a
+#	rapid block's end P, t when within -tol of the path ahead of the last
+#	match (moving the cursor there), else "".
+proc ::verifytool::Place {P t} {
+    variable S
+    lassign [::fivax::clpath nearest $S(clPoints) $P $t $S(cursor) \
+        [dict get $S(opts) -window]] d i s
+    if {$d eq "" || $d > [dict get $S(opts) -tol]} {return ""}
+    set S(cursor) $i
+    expr {$i + $s}
 }
 
 # ::verifytool::ArcInside --
@@ -301,8 +389,9 @@ proc ::verifytool::FeedIssue {blk} {
 }
 
 # ::verifytool::Match --
-#	Returns {d a}: the distance (mm) of tip P from the CL path and the
-#	angle (deg) of axis t from the CL axis there, searching ahead of the
+#	Returns {d a u}: the distance (mm) of tip P from the CL path (PathDistance),
+#	the angle (deg) of axis t from the CL axis at the match and its place
+#	(segment index plus fraction), searching ahead of the
 #	last match (the whole operation when the window finds nothing within
 #	-tol); moves the cursor to the match.
 proc ::verifytool::Match {P t} {
@@ -314,7 +403,26 @@ proc ::verifytool::Match {P t} {
         if {[lindex $far 0] < $d} {lassign $far d i s Q tq}
     }
     set S(cursor) $i
-    list $d [::fivax::num::deg [::fivax::vec::angle $t $tq]]
+    list [PathDistance $P $i] [::fivax::num::deg [::fivax::vec::angle $t $tq]] [expr {$i + $s}]
+}
+
+# ::verifytool::PathDistance --
+#	Returns the distance (mm) of tip P from the CL path next to its match
+#	on segment i: the nearest point of segments i - 1 to i + 1. (The
+#	match itself blends tip and axis to find the place; the distance is
+#	the tip's own, never more than its distance from the CL point the
+#	post aimed at, which lies on that path.)
+proc ::verifytool::PathDistance {P i} {
+    variable S
+    set last [expr {[llength $S(clPoints)] - 1}]
+    if {$last < 1} {return [::fivax::vec::dist $P [lindex $S(clPoints) 0 0]]}
+    set d Inf
+    for {set k [expr {max(0, $i - 1)}]} {$k <= min($last - 1, $i + 1)} {incr k} {
+        set dk [lindex [::fivax::clpath::Project [lindex $S(clPoints) $k 0] \
+            [lindex $S(clPoints) [expr {$k + 1}] 0] $P] 0]
+        if {$dk < $d} {set d $dk}
+    }
+    return $d
 }
 
 # ::verifytool::Bottom --
@@ -368,7 +476,8 @@ proc ::verifytool::Problems {} {
         dict with op {}
         foreach {key lim unit what} [list endPos $tol mm "tip off the CL path" \
                 endAng $atol deg "axis off the CL axis" midPos $midTol mm "tip inside a block" \
-                midAng $midAtol deg "axis inside a block"] {
+                midAng $midAtol deg "axis inside a block" arcPos $midTol mm "tip inside an arc" \
+                arcAng $midAtol deg "axis inside an arc"] {
             if {[dict get $op $key] > $lim} {
                 lappend problems [format "%s: %s %.6f %s > %g at %s" $name $what \
                     [dict get $op $key] $unit $lim [dict get $op ${key}At]]
@@ -397,21 +506,36 @@ proc ::verifytool::Report {opts ops names hasCl} {
         }
         append msg [format "; inside blocks: max %.6f mm at %s, %.6f deg" $midPos \
             [Where $midPosAt] $midAng]
-        append msg [format "; rotary travel %s %.3f deg, %s %.3f deg; %d retracts;\
-            %d values outside limits; %d feed anomalies" [lindex $names 0] \
-            [::fivax::num::deg [lindex $travel 0]] [lindex $names 1] \
-            [::fivax::num::deg [lindex $travel 1]] $retracts $limits $feedIssues]
+        append msg [format "; rotary travel %s %.3f deg, %s %.3f deg" \
+            [lindex $names 0] [::fivax::num::deg [lindex $travel 0]] [lindex $names 1] \
+            [::fivax::num::deg [lindex $travel 1]]]
+        if {$hasCl} {
+            append msg [format "; inside arcs vs CL: max %.6f mm at %s, %.6f deg" $arcPos \
+                [Where $arcPosAt] $arcAng]
+        }
+        append msg [format "; %d rapids after cutting" $rapids]
+        if {$hasCl} {append msg [format ", %d limit retracts" $limitRetracts]}
+        append msg [format "; %d values outside limits; %d feed anomalies" $limits $feedIssues]
         Say $opts $msg
-        foreach {key at} {endPos endPosAt midPos midPosAt} {
+        foreach {key at} {endPos endPosAt midPos midPosAt arcPos arcPosAt} {
             if {[dict get $op $key] > $wv} {
                 set wv [dict get $op $key]
                 set worst [list [dict get $op $at] $key]
             }
         }
     }
+    set rapids 0
+    set limitRetracts 0
+    foreach op $ops {
+        incr rapids [dict get $op rapids]
+        incr limitRetracts [dict get $op limitRetracts]
+    }
+    Say $opts "verify: program: $rapids rapids after cutting[expr {$hasCl ?
+        ", $limitRetracts limit retracts" : ""}] (the post's summary counts the same)"
     if {$worst ne "" && [lindex $worst 0] ne ""} {
         Say $opts [format "verify: worst NC line %s (%s %.6f mm)" [lindex $worst 0] \
-            [expr {[lindex $worst 1] eq "endPos" ? "block end off the CL path" : "inside the block"}] $wv]
+            [dict get {endPos "block end off the CL path" midPos "inside the block"
+                arcPos "inside the arc"} [lindex $worst 1]] $wv]
     }
 }
 

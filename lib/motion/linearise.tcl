@@ -7,13 +7,28 @@
 #	linear, axis slerp) until within -tol / -atol. Where a move leaves the
 #	singular cone with another azimuth, the azimuth turns first while the
 #	tip dwells.
+#
+#	The tolerance holds for the values written, as the post's check and
+#	tools/verify.tcl measure them. The rotaries of a point record are
+#	already those written (rounded to -angle-step, X Y Z computed for
+#	them); X Y Z are rounded by the output to -length-step. So each move
+#	is measured with its ends' X Y Z as written (Written): the quarter
+#	points are those the control interpolates. The budget this takes from
+#	-tol: forward kinematics moves the tip rigidly with X Y Z (a
+#	translation, turned by the table axes on table machines), so at the
+#	ends the tip is within h = sqrt(3)/2 step of the CL point (each axis
+#	off by at most half a step), and inside the move the rounding's
+#	contribution, interpolated linearly between the ends, is at most h
+#	too: a move whose exact joints keep the tip within tol - h keeps it
+#	within tol when written. The bound (kin interpolationBound) takes h as
+#	its end error ep; the quarter points are measured exactly.
 
 oo::define ::fivax::motion::Planner {
     # Returns the point records after a up to and including b such that
-    # the linear joint interpolation between consecutive ones keeps the
-    # tip within -tol of their straight segment and the axis within -atol
-    # of the great circle of their actual axes (act), checked at the
-    # quarter points. An error e splits the move into about sqrt(e / tol)
+    # the linear joint interpolation between consecutive ones, with X Y Z
+    # as written (Written), keeps the tip within -tol of their straight
+    # segment and the axis within -atol of the great circle of their
+    # actual axes (act), checked at the quarter points. An error e splits the move into about sqrt(e / tol)
     # pieces (the error of a smooth move shrinks with the square of its
     # length), each checked in turn, at most maxDepth levels deep and into
     # at most maxPieces pieces in all (a move of absurd length would
@@ -41,15 +56,18 @@ oo::define ::fivax::motion::Planner {
         set n 2
         if {$ok} {
             # First the bound (kin interpolationBound): it proves most moves
-            # within tolerance without the quarter points. The tips of a
-            # and b are their CL points (the linear axes absorb the
-            # rounding); their axes act are within S(actError) of the
-            # joints' axis: the rotary rounding (half a step on each axis)
-            # and the 6.3e-9 rad a candidate may be moved onto a limit.
-            lassign [::fivax::kin::interpolationBound $S(model) $ja $jb $Pa $Pb $acta $actb \
-                0.0 $S(actError)] bp ba
+            # within tolerance without the quarter points. The tips of the
+            # written joints of a and b are within S(xyzError) of their CL
+            # points (see the file header); their axes act are within
+            # S(actError) of the joints' axis: the rotary rounding (half a
+            # step on each axis) and the 6.3e-9 rad a candidate may be
+            # moved onto a limit.
+            set wa [my Written $ja]
+            set wb [my Written $jb]
+            lassign [::fivax::kin::interpolationBound $S(model) $wa $wb $Pa $Pb $acta $actb \
+                $S(xyzError) $S(actError)] bp ba
             if {$bp <= $S(tol) && $ba <= $S(atolCheck)} {return [list $b]}
-            lassign [::fivax::kin::interpolationError $S(model) $ja $jb $Pa $Pb $acta $actb \
+            lassign [::fivax::kin::interpolationError $S(model) $wa $wb $Pa $Pb $acta $actb \
                 $S(tol) $S(atolCheck)] dp da
             set e [expr {$dp / $S(tol)}]
             if {$da / $S(atolCheck) > $e} {set e [expr {$da / $S(atolCheck)}]}
@@ -84,6 +102,31 @@ oo::define ::fivax::motion::Planner {
             return [list $b]
         }
         list [lappend b retract]
+    }
+
+    # Sets S(xyzDecimals) (the decimals of -length-step, "" when exact or
+    # in a work plane's frame) and S(xyzError) (the largest distance the
+    # rounding of X Y Z moves the tip, see the file header).
+    method WrittenResolution {} {
+        set step $S(length-step)
+        set S(xyzDecimals) ""
+        set S(xyzError) 0.0
+        if {$step <= 0} return
+        set S(xyzDecimals) [expr {max(0, int(round(-log10($step))))}]
+        # (1e-12: the margin of the reader's decimal to double conversion)
+        set S(xyzError) [expr {sqrt(3.0) / 2.0 * $step + 1e-12}]
+    }
+
+    # Returns joints {X Y Z q1 q2} with X Y Z as the output writes them
+    # (format with -length-step's decimals, read back); unchanged when
+    # exact or in a work plane (its X Y Z are written in the plane's frame,
+    # where the rotaries stand still and the tip moves straight).
+    method Written {joints} {
+        if {$S(xyzDecimals) eq "" || $S(plane) ne ""} {return $joints}
+        lassign $joints x y z q1 q2
+        set f %.$S(xyzDecimals)f
+        list [expr {double([format $f $x])}] [expr {double([format $f $y])}] \
+            [expr {double([format $f $z])}] $q1 $q2
     }
 }
 

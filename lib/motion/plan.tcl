@@ -85,6 +85,8 @@ namespace eval ::fivax::motion {
         {-output any {} DICT "what the output dialect writes (the output Writer's capabilities)"}
         {-angle-step {real min 0} 0 DEG
             "output resolution of the rotary words: rotaries are rounded to it before X Y Z are computed (0: exact)"}
+        {-length-step {real min 0} 0 MM
+            "output resolution of the X Y Z words, a power of ten: the linearisation measures X Y Z rounded to it, as written (0: exact)"}
     }
 }
 
@@ -128,6 +130,7 @@ oo::class create ::fivax::motion::Planner {
         # -atol 0: no check of the tool axis between blocks
         set S(atolCheck) [expr {$S(atol) > 0 ? [::fivax::num::rad $S(atol)] : Inf}]
         set S(swingRad) [::fivax::num::rad $S(swing)]
+        my WrittenResolution
         # the cost of a retract (see Relax)
         namespace upvar ::fivax::motion retractCost retractCost
         set S(retractCost) $retractCost
@@ -240,7 +243,8 @@ oo::class create ::fivax::motion::Planner {
     # written), inserted (linearisation points), retracts, holds (CL
     # points posted with the azimuth held in the singular cone), swings
     # (azimuth swings above -swing between close points), unresolved
-    # (moves still out of tolerance after the deepest split), forced
+    # (cutting moves whose quarter points, X Y Z as written, are still
+    # beyond -tol or -atol after the deepest split), forced
     # (window commits before the merge).
     # dwells (cutting moves that only turn the rotaries with the tip at
     # rest) and dwellTurn (deg), clamps (inverse-time feeds clamped at the
