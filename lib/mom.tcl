@@ -161,8 +161,9 @@ proc ::fivax::mom::FirstUnit {path} {
 #	top; RTRCTO r|AUTO|MANUAL) and the APT form of Creo and others (CLEAR
 #	c: the R plane c above the top; DEPTH d: the bottom d below it), STEP
 #	s1 ?s2 s3?, DWELL s (seconds: mom_cycle_delay) or DWELL,REV,n
-#	(mom_cycle_delay_revs, mom_cycle_delay_mode REVOLUTIONS), and the feed MMPM|IPM|
-#	MMPR|IPR f. A DWELL word makes a drill or bore cycle its dwelling form.
+#	(mom_cycle_delay_revs, mom_cycle_delay_mode REVOLUTIONS), and the
+#	feed MMPM|IPM|MMPR|IPR f. A DWELL word makes a drill or bore cycle
+#	its dwelling form.
 #	Errors: {FIVAX MOM CYCLE} "FILE:LINE: CYCLE: what" for a word or
 #	cycle it does not know, a missing depth or R plane, or a bottom not
 #	below the R plane: a hole never vanishes silently.
@@ -178,7 +179,8 @@ proc ::fivax::mom::CycleParams {rec scale} {
     }
     set p [dict create mom_cycle_type $key mom_cycle_retract_mode MANUAL \
         mom_cycle_feed_rate "" mom_cycle_feed_rate_mode "" mom_cycle_delay 0.0 \
-        mom_cycle_delay_revs 0.0 mom_cycle_delay_mode SECONDS mom_cycle_step1 0.0 mom_cycle_step2 0.0 mom_cycle_step3 0.0]
+        mom_cycle_delay_revs 0.0 mom_cycle_delay_mode SECONDS \
+        mom_cycle_step1 0.0 mom_cycle_step2 0.0 mom_cycle_step3 0.0]
     set dwell 0
     set n [llength $args]
     for {set i 0} {$i < $n} {incr i} {
