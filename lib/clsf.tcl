@@ -13,12 +13,13 @@
 #	  COUNT   wrong number of numbers for the record
 #	  AXIS    a direction whose length differs from 1 by more than 1e-3
 #	  WORD    missing, unknown or misplaced minor word
-#	  RANGE   a value outside its range (KNOT values in (0,1], ascending)
+#	  RANGE   a value outside its range (KNOT values in (0,1], ascending;
+#	          CIRCLE TIMES 0 to 1000)
 #	  TEXT    a control character (NUL included) or bytes that are not UTF-8
 #	  LINE    a physical line or a record longer than 65536 characters
 
 namespace eval ::fivax::clsf {
-    namespace export open channel parse progress
+    namespace export open channel parse progress ends
     namespace ensemble create -prefixes 0
 }
 
@@ -313,6 +314,13 @@ namespace eval ::fivax::clsf {
     variable maxLine 65536
     variable maxRecord 65536
     variable chunk 60000
+    # Most extra turns of a helix (CIRCLE ... TIMES n): each turn is at
+    # least one arc piece, and its points at the arc tolerance (a few
+    # hundred a turn) go through the planner. A single-point thread mill
+    # cutting 100 mm of thread at 0.2 mm pitch turns 500 times, a helical
+    # ramp 50 mm down at 0.5 mm a turn 100 times; 2147483647 ran until
+    # killed.
+    variable maxTurns 1000
     # The progress command (see progress) and how many records apart it runs.
     variable progress ""
     variable progressEvery 256
@@ -328,6 +336,23 @@ proc ::fivax::clsf::progress {cmd} {
     set old $progress
     set progress $cmd
     return $old
+}
+
+# ::fivax::clsf::ends --
+#	Returns 1 when record rec may be the last of a complete CL file: NX's
+#	END-OF-PATH (each operation ends with one; NX writes no FINI), APT's
+#	FINI (Creo, SolidWorks CAM), or Makino FFCAM's closing section
+#	PPRINT/END-SECTION,PROCESS-END-PATH (its files have neither). A file
+#	whose last record is anything else was cut short.
+proc ::fivax::clsf::ends {rec} {
+    switch -- [dict get $rec kind] {
+        END_OF_PATH - FINI {return 1}
+        PPRINT {
+            return [expr {[string toupper [string map {" " ""} [dict get $rec text]]]
+                eq "END-SECTION,PROCESS-END-PATH"}]
+        }
+    }
+    return 0
 }
 
 # ::fivax::clsf::Decode --
@@ -590,6 +615,10 @@ proc ::fivax::clsf::ParseCircle {rest file line} {
                 ::fivax::Fail CLSF COUNT "$file:$line: CIRCLE: TIMES needs a number"
             }
             set times [Int [lindex $toks $p] $file $line CIRCLE]
+            if {$times < 0 || $times > $::fivax::clsf::maxTurns} {
+                ::fivax::Fail CLSF RANGE "$file:$line: CIRCLE: TIMES [Quote [lindex $toks $p]] is\
+                    not a number of extra turns from 0 to $::fivax::clsf::maxTurns"
+            }
         } elseif {[string match {[-+.0-9]*} $t]} {
             BadNumber $t $file $line CIRCLE
         } else {

@@ -165,8 +165,10 @@ proc ::fivax::mom::FirstUnit {path} {
 #	(RAPTO r, FEDTO f: signed distances along the tool axis from the hole
 #	top; RTRCTO r|AUTO|MANUAL) and the APT form of Creo and others (CLEAR
 #	c: the R plane c above the top; DEPTH d: the bottom d below it), STEP
-#	s1 ?s2 s3?, DWELL s (seconds) or DWELL,REV,n, and the feed MMPM|IPM|
-#	MMPR|IPR f. A DWELL word makes a drill or bore cycle its dwelling form.
+#	s1 ?s2 s3?, DWELL s (seconds: mom_cycle_delay) or DWELL,REV,n
+#	(mom_cycle_delay_revs, mom_cycle_delay_mode REVOLUTIONS), and the
+#	feed MMPM|IPM|MMPR|IPR f. A DWELL word makes a drill or bore cycle
+#	its dwelling form.
 #	Errors: {FIVAX MOM CYCLE} "FILE:LINE: CYCLE: what" for a word or
 #	cycle it does not know, a missing depth or R plane, or a bottom not
 #	below the R plane: a hole never vanishes silently.
@@ -182,7 +184,8 @@ proc ::fivax::mom::CycleParams {rec scale} {
     }
     set p [dict create mom_cycle_type $key mom_cycle_retract_mode MANUAL \
         mom_cycle_feed_rate "" mom_cycle_feed_rate_mode "" mom_cycle_delay 0.0 \
-        mom_cycle_delay_mode SECONDS mom_cycle_step1 0.0 mom_cycle_step2 0.0 mom_cycle_step3 0.0]
+        mom_cycle_delay_revs 0.0 mom_cycle_delay_mode SECONDS \
+        mom_cycle_step1 0.0 mom_cycle_step2 0.0 mom_cycle_step3 0.0]
     set dwell 0
     set n [llength $args]
     for {set i 0} {$i < $n} {incr i} {
@@ -200,8 +203,8 @@ proc ::fivax::mom::CycleParams {rec scale} {
             continue
         }
         if {$word eq "DWELL" && $next eq "REV" && [string is double -strict [lindex $args $i+2]]} {
-            dict set p mom_cycle_delay [lindex $args $i+2]
-            dict set p mom_cycle_delay_mode REVS
+            dict set p mom_cycle_delay_revs [lindex $args $i+2]
+            dict set p mom_cycle_delay_mode REVOLUTIONS
             set dwell 1
             incr i 2
             continue
@@ -334,6 +337,9 @@ oo::class create ::fivax::mom::Runtime {
     # run --
     #	Replays the CLSF file path ("-": standard input) through the post:
     #	start of program, every record as its NX events, end of program.
+    #	Errors: {FIVAX MOM EMPTY} for a file without records, {FIVAX MOM
+    #	END} for one whose last record is no end of a CL file (see
+    #	::fivax::clsf::ends): it was cut short. Both name the file's last line.
     method run {path} {
         if {$path eq "-"} {
             set reader [::fivax::clsf::channel stdin <stdin>]
@@ -345,11 +351,15 @@ oo::class create ::fivax::mom::Runtime {
         try {
             my Start $path
             # (dict size: ne "" would make each record's string)
+            set last {}
             while {[dict size [set rec [$reader next]]]} {
                 incr S(records)
                 my Record $rec
                 if {[llength $S(ops)] >= $batch} {my Flush}
+                set last $rec
             }
+            my CheckEnd [expr {$path eq "-" ? "<stdin>" : $path}] $last \
+                [lindex [$reader position] 0]
             my Finish
             my Flush
         } on error {msg opts} {
@@ -360,6 +370,25 @@ oo::class create ::fivax::mom::Runtime {
             $reader destroy
         }
         my stats
+    }
+
+    # CheckEnd --
+    #	Raises the error of the CL file named file that ends at line lineNo
+    #	after the record last ({} when it had none) without an end: empty,
+    #	or cut short (the post would write what it read as a whole program).
+    method CheckEnd {file last lineNo} {
+        set where "$file:[expr {max($lineNo, 1)}]"
+        if {![dict size $last]} {
+            ::fivax::Fail MOM EMPTY "$where: the CL file has no records (empty, or only\
+                comments and blank lines): no program to post"
+        }
+        if {![::fivax::clsf::ends $last]} {
+            set what [dict get $last kind]
+            if {$what eq "UNKNOWN"} {set what [dict get $last major]}
+            ::fivax::Fail MOM END "$where: the CL file ends after $what (line\
+                [dict get $last line]) without END-OF-PATH or FINI: it was cut short\
+                (NX CLSF ends each operation with END-OF-PATH, APT ends with FINI)"
+        }
     }
 
     # Start -- Sets program-level globals and fires MOM_start_of_program.

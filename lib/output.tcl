@@ -85,6 +85,9 @@ namespace eval ::fivax::output {
     #              axes (N and O are the post's); {} for none (Klartext:
     #              INSERT text is always a comment unless -insert verbatim)
     #   active     comment words the controller would act on (defused)
+    #   ends       what ends the program in a line of NC text: {M codes,
+    #              list of regexps} (an INSERT holding one is an error, see
+    #              literal)
     variable Dialects {
         fanuc {
             syntax gcode program O%04d percent 1 comment paren
@@ -96,6 +99,7 @@ namespace eval ::fivax::output {
                 bore 85 bore_drag 86 bore_no_drag 76 bore_back 87 bore_manual 88 bore_dwell 89}
             letters {G M F S T H D P Q R I J K L}
             active {}
+            ends {{2 30 99} {%}}
         }
         sinumerik {
             syntax gcode program {} percent 0 comment semicolon
@@ -107,6 +111,7 @@ namespace eval ::fivax::output {
             cycles {}
             letters {G M F S T D P Q R I J K L}
             active {}
+            ends {{2 17 30} {{\mRET\M}}}
         }
         heidenhain {
             syntax klartext program {} percent 0 comment numbered
@@ -118,6 +123,7 @@ namespace eval ::fivax::output {
             cycles {}
             letters {}
             active {}
+            ends {{2 30} {{\mEND\s+PGM\M}}}
         }
         linuxcnc {
             syntax gcode program {} percent 1 comment paren
@@ -130,6 +136,7 @@ namespace eval ::fivax::output {
             letters {G M F S T H D P Q R I J K L}
             active {MSG DEBUG PRINT LOG LOGOPEN LOGAPPEND LOGCLOSE PROBEOPEN PROBECLOSE
                 ABORT PY PYRUN PYRELOAD}
+            ends {{2 30 99} {%}}
         }
     }
     # The angle convention of each work-plane form (see lib/plane.tcl).
@@ -572,16 +579,41 @@ oo::class create ::fivax::output::Writer {
 
     # Returns INSERT text as an NC line when it reads as NC words of the
     # dialect (see NotWords) or -insert is verbatim; else as a comment,
-    # with a warning.
+    # with a warning. Errors: {FIVAX OUTPUT INSERT} for an NC line that
+    # ends the program (M30 ...): the control would stop there, and the
+    # program's own end (Z up, spindle off) would never run.
     method literal {text} {
-        if {[dict get $S(cfg) -insert] eq "verbatim"} {return [list $text]}
-        set why [my NotWords $text]
-        if {$why eq ""} {return [list $text]}
+        set verbatim [expr {[dict get $S(cfg) -insert] eq "verbatim"}]
+        set why [expr {$verbatim ? "" : [my NotWords $text]}]
+        if {$why eq ""} {
+            set end [my ProgramEnd $text]
+            if {$end ne ""} {
+                ::fivax::Fail OUTPUT INSERT "INSERT '$text' ends the program\
+                    ($end) before its end: the control would stop there; take it out of\
+                    the CL (the post writes the program end)"
+            }
+            return [list $text]
+        }
         set warn [dict get $S(cfg) -warn]
         if {[llength $warn]} {
             {*}$warn "INSERT text written as a comment: $why (-insert verbatim writes it as it is)"
         }
         list [my comment $text]
+    }
+
+    # Returns what in the NC text ends the program in the dialect (the M
+    # code, RET, END PGM, %), outside its comments; "" when nothing does.
+    method ProgramEnd {text} {
+        lassign [dict get $S(dialect) ends] codes patterns
+        set code [string toupper [regsub -all {\([^()]*\)} $text " "]]
+        if {[dict get $S(cfg) -controller] ne "fanuc"} {regsub {;.*$} $code "" code}
+        foreach {- n} [regexp -all -inline {(?:^|[^A-Z0-9_.])M\s*0*(\d+)(?![\d.])} $code] {
+            if {$n in $codes} {return M$n}
+        }
+        foreach re $patterns {
+            if {[regexp -- $re $code word]} {return $word}
+        }
+        return ""
     }
 
     # Returns what keeps text from being a line of NC words ("" when it

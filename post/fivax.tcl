@@ -694,17 +694,40 @@ foreach fivax_event $fivax(cycleEvents) {
 }
 unset fivax_event
 
-# fivax_cycle -- Keeps the data of a cycle activated by NX event name event.
+# fivax_cycle --
+#	Keeps the data of a cycle activated by NX event name event; a dwell
+#	in revolutions (mom_cycle_delay_mode REVOLUTIONS) becomes seconds.
 proc fivax_cycle {event} {
     global fivax mom_cycle_rapid_to mom_cycle_feed_to mom_cycle_retract_to mom_cycle_step1
-    global mom_cycle_delay mom_cycle_feed_rate mom_feed_rate
+    global mom_cycle_delay mom_cycle_feed_rate mom_feed_rate mom_cycle_delay_mode mom_cycle_delay_revs
     fivax_emit [$fivax(plan) flush]
+    set delay [expr {[info exists mom_cycle_delay] ? $mom_cycle_delay : 0.0}]
+    if {[info exists mom_cycle_delay_mode] && $mom_cycle_delay_mode eq "REVOLUTIONS"} {
+        set delay [fivax_revs_seconds $mom_cycle_delay_revs]
+    }
     set rate [expr {[info exists mom_cycle_feed_rate] && $mom_cycle_feed_rate ne ""
         ? $mom_cycle_feed_rate : [info exists mom_feed_rate] ? $mom_feed_rate : 0.0}]
     set retract [expr {[info exists mom_cycle_retract_to] ? $mom_cycle_retract_to : $mom_cycle_rapid_to}]
     set fivax(cycle) [dict create event $event rapid $mom_cycle_rapid_to feed $mom_cycle_feed_to \
         retract $retract step [expr {[info exists mom_cycle_step1] ? $mom_cycle_step1 : 0.0}] \
-        delay [expr {[info exists mom_cycle_delay] ? $mom_cycle_delay : 0.0}] rate $rate]
+        delay $delay rate $rate]
+}
+
+# fivax_revs_seconds --
+#	Returns the seconds revs spindle revolutions take at the spindle speed
+#	in effect (60 * revs / rpm). Errors when no speed in rpm is in effect
+#	(none programmed, spindle off, or a surface speed): the dwell would be
+#	written with a time it does not have.
+proc fivax_revs_seconds {revs} {
+    global mom_spindle_speed mom_spindle_mode mom_spindle_status
+    if {![info exists mom_spindle_speed] || ![string is double -strict $mom_spindle_speed]
+            || !($mom_spindle_speed >= 1)
+            || ([info exists mom_spindle_status] && $mom_spindle_status eq "OFF")
+            || ([info exists mom_spindle_mode] && $mom_spindle_mode ni {RPM ""})} {
+        error "a dwell of $revs spindle revolutions with no spindle speed in rpm in effect:\
+            program SPINDL/RPM before it, or the dwell in seconds"
+    }
+    expr {60.0 * $revs / $mom_spindle_speed}
 }
 
 # fivax_hole -- Writes one hole of the active cycle, its top at top on mom_tool_axis.
@@ -786,14 +809,15 @@ fivax_handler MOM_opstop {
     fivax_out [$fivax(out) stop 1]
 }
 
+# A dwell in seconds, or in spindle revolutions (mom_delay_mode
+# REVOLUTIONS) as the seconds they take at the spindle speed in effect.
 fivax_handler MOM_delay {
-    global fivax mom_delay_value mom_delay_mode
+    global fivax mom_delay_value mom_delay_mode mom_delay_revs
     fivax_emit [$fivax(plan) flush]
-    if {[info exists mom_delay_value] && (![info exists mom_delay_mode]
-            || $mom_delay_mode eq "SECONDS")} {
-        fivax_out [$fivax(out) dwell $mom_delay_value]
+    if {[info exists mom_delay_mode] && $mom_delay_mode eq "REVOLUTIONS"} {
+        fivax_out [$fivax(out) dwell [fivax_revs_seconds $mom_delay_revs]]
     } else {
-        fivax_warn "a dwell in spindle revolutions is not written: program it in seconds"
+        fivax_out [$fivax(out) dwell $mom_delay_value]
     }
 }
 

@@ -23,6 +23,8 @@
 #	files are removed on every exit path: errors and a broken pipe here,
 #	and signals (which pure Tcl cannot catch) by a guard process that
 #	removes them when this process ends in any way (see ::replay::Guard).
+#	A run that fails after the -o path was checked also removes the
+#	program (and its log) an earlier run left there, and says so.
 #
 #	Progress. When standard error is a terminal (and without -quiet) a
 #	progress line there, at most twice a second: records, percent of the
@@ -58,7 +60,7 @@ proc ::replay::Reset {} {
     variable R
     array unset R
     array set R {
-        target "" tmp "" log "" out "" sink "" guard "" held "" discard 0 broken ""
+        target "" stale {} tmp "" log "" out "" sink "" guard "" held "" discard 0 broken ""
         rt "" shown 0 start 0 last 0 size ""
     }
 }
@@ -70,11 +72,31 @@ proc ::replay::Say {msg} {
     catch {puts stderr $msg}
 }
 
-# ::replay::Die -- Cleans up, prints msg on standard error and exits with status 1.
+# ::replay::Die --
+#	Cleans up, prints msg on standard error and exits with status 1; the
+#	previous program at a file target (and its log) is removed (see
+#	RemovePrevious).
 proc ::replay::Die {msg} {
     Cleanup
     Say $msg
+    RemovePrevious
     exit 1
+}
+
+# ::replay::RemovePrevious --
+#	Removes the files of R(stale), the -o file target and its log left
+#	by an earlier run, once this run has failed: a program at the -o path
+#	after a failed run would pass for this run's. Says so on standard
+#	error.
+proc ::replay::RemovePrevious {} {
+    variable R
+    foreach path $R(stale) {
+        if {[catch {file type $path} type] || $type ne "file"} continue
+        if {![catch {file delete -- $path}]} {
+            Say "replay: removed the previous $path: this run failed"
+        }
+    }
+    set R(stale) {}
 }
 
 # ::replay::Table -- Returns the command line's option table.
@@ -301,15 +323,20 @@ proc ::replay::Finish {} {
         file rename -force $R(tmp) $R(target)
         set R(tmp) ""
     }
+    set R(stale) {}
     CloseGuard
 }
 
 # ::replay::LogFile --
 #	Returns <target>.log, the log file beside the file target path, or ""
-#	when that is the target itself; dies when it cannot be written.
-proc ::replay::LogFile {path} {
+#	when that is the target itself; dies when it cannot be written or is
+#	one of the inputs (clsf, the machine file).
+proc ::replay::LogFile {path clsf machineFile} {
     set log [file rootname $path].log
     if {$log eq $path} {return ""}
+    foreach {input what} [list $clsf "the CL file" $machineFile "the machine file"] {
+        if {$input ne "-" && [SameFile $log $input]} {Die "replay: -o $path: its log $log is $what"}
+    }
     if {[file exists $log] && ([file type $log] ne "file" || ![file writable $log])} {
         Die "replay: -o $path: its log $log is not a writable file"
     }
@@ -516,11 +543,13 @@ proc ::replay::main {argv} {
     }
     set machineFile [dict get $settings -machine]
     CheckInput $clsf
-    CheckMachine $settings
     set target ""
     if {[dict get $opts -o] ni {"" -}} {
         set target [CheckTarget -o [dict get $opts -o] $clsf $machineFile]
+        # from here on a failed run removes the program of an earlier one
+        if {[lindex $target 0] eq "file"} {set R(stale) [list [lindex $target 1]]}
     }
+    CheckMachine $settings
     if {[dict get $settings -log] ne ""} {
         CheckTarget -log [dict get $settings -log] $clsf $machineFile
     }
@@ -535,7 +564,8 @@ proc ::replay::main {argv} {
     # the run succeeds
     set log ""
     if {[lindex $target 0] eq "file" && [dict get $settings -log] eq ""} {
-        set log [LogFile [lindex $target 1]]
+        set log [LogFile [lindex $target 1] $clsf $machineFile]
+        if {$log ne ""} {lappend R(stale) $log}
     }
     OpenTarget $target $log
     if {$log ne ""} {dict set settings -log $R(tmp).log}
@@ -558,9 +588,6 @@ proc ::replay::main {argv} {
     }
     ::fivax::clsf::progress ""
     ClearProgress
-    if {[dict get $stats records] == 0} {
-        Say "fivax: warning: [expr {$clsf eq "-" ? "<stdin>" : $clsf}]: no CL records (empty file): the program has no motion"
-    }
     if {![dict get $opts -quiet]} {Summary $stats}
 }
 
