@@ -29,6 +29,7 @@ namespace eval ::matrixtool {
         {-tcp text {0 1} "VALUES" "TCP settings"}
         {-workplane text {auto off} "VALUES" "work-plane settings"}
         {-tool-length {maybe real gt 0} 50 MM "tool length for CL files without one (replay -tool-length; empty: not given)"}
+        {-default-rpm {maybe real gt 0} 10000 RPM "default_rpm of the machines that have none, for CL files without a spindle speed (empty: the machine files as they are)"}
         {-jobs {int min 1} 2 N "cases run at once"}
         {-dir text {} DIR "work directory for the programs (default: a temporary one, removed at the end)"}
         {-verbose bool 0 "" "print one line per case"}
@@ -55,6 +56,19 @@ proc ::matrixtool::HasMsys {path} {
         close $chan
     }
     return 0
+}
+
+# ::matrixtool::WithRpm --
+#	Returns the machine file path, or when the machine has no default_rpm
+#	a copy of it in dir with default_rpm rpm (the speed of CL files that
+#	give none).
+proc ::matrixtool::WithRpm {path rpm dir} {
+    if {[dict get [::fivax::machine load $path] default_rpm] ne ""} {return $path}
+    set chan [::fivax::nctool open $path]
+    set text [read $chan]
+    close $chan
+    set copy [file join $dir [file tail $path]]
+    ::fivax::nctool writeLines $copy [list $text "default_rpm $rpm"]
 }
 
 # ::matrixtool::Cases --
@@ -191,6 +205,9 @@ proc ::matrixtool::main {argv} {
             fivax-matrix-[pid]]
     }
     file mkdir $S(dir)
+    if {[dict get $opts -default-rpm] ne ""} {
+        set machines [lmap m $machines {WithRpm $m [dict get $opts -default-rpm] $S(dir)}]
+    }
     set S(cases) [Cases $opts $files $machines]
     set total [llength $S(cases)]
     set S(running) {}
