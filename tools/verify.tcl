@@ -259,9 +259,18 @@ proc ::verifytool::Cutting {blk joints P t where {match Match}} {
         lassign $S(prev) j0 P0 t0 u0
         set segs [Segments $u0 $S(endU) $P0 $P]
         if {![llength $segs]} {set segs [list [list $P0 $P $t0 $t]]}
+        # the best fit: the least of the tip's and the axis's errors in
+        # parts of their tolerances
+        set tol [dict get $S(opts) -tol]
+        set atol [dict get $S(opts) -atol]
+        set best Inf
         foreach seg $segs {
-            set in [$S(checker) interior $j0 $joints {*}$seg]
-            if {![llength $inside] || [lindex $in 0] < [lindex $inside 0]} {set inside $in}
+            lassign [$S(checker) interior $j0 $joints {*}$seg] dp da
+            set e [expr {max($tol > 0 ? $dp / $tol : $dp, $atol > 0 ? $da / $atol : 0.0)}]
+            if {$e < $best} {
+                set best $e
+                set inside [list $dp $da]
+            }
         }
     }
     if {[llength $inside]} {
@@ -298,8 +307,8 @@ proc ::verifytool::LimitRetract {u0 u1} {
 #	holding the middle of the two places, as the post splits a CL move
 #	only along its segment (the block ends themselves may match just
 #	across a CL point); for a block shorter than 2 -tol, where the
-#	rounding of its ends leaves that in doubt, also the segments either
-#	side. Only segments both ends lie within -tol of; none when either
+#	rounding of its ends leaves that in doubt (or the tip hardly moves
+#	while the axis turns), also the segments either side. Only segments both ends lie within -tol of; none when either
 #	end has no place (the inside is then measured against the straight
 #	line between the block ends).
 proc ::verifytool::Segments {u0 u1 P0 P1} {
