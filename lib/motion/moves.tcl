@@ -78,19 +78,33 @@ oo::define ::fivax::motion::Planner {
             feed $f mode $mode rate $rate tip $tip P $P t $t src $src tag $tag note $note
     }
 
-    # Returns the moves to the very first point b (a point record): a
-    # rapid rotates first, then moves X Y, then Z; a feed goes straight.
-    # A first feed point is approached from clearance above it along the
-    # tool axis (never a first move that feeds from an unknown position),
-    # the last clearance at the entry feed.
+    # Returns the moves to the very first point b (a point record) of kind
+    # rapid or feed, from the tool-change height with unknown X Y: the
+    # rotaries turn first (at that height), then the tool reaches the
+    # point clearance above b along its tool axis (Reach), and goes down
+    # that axis onto b (a feed at the entry feed: never a first move that
+    # feeds from an unknown position).
     method First {kind b feed src} {
-        if {$kind eq "feed"} {
-            set a [my Above $b]
-            return [concat [my First rapid $a 0.0 $src] [list [my Entry $b $feed $src]]]
-        }
+        set a [my Above $b]
+        set moves [list [my Move rapid [lindex $a 0] R {} {} {} $src] {*}[my Reach $a $src]]
+        if {$kind eq "feed"} {return [lappend moves [my Entry $b $feed $src]]}
         lassign $b joints P t
-        list [my Move rapid $joints R {} {} {} $src] [my Move rapid $joints {X Y} {} {} {} $src] \
-            [my Move rapid $joints {X Y Z R} $P $t {} $src]
+        lappend moves [my Move rapid $joints {X Y Z R} $P $t {} $src]
+    }
+
+    # Returns the rapid moves from the tool-change height (X Y unknown,
+    # the rotaries already those of point record a) to a, each above the
+    # stock: in a work plane along the tool axis (its Z) first, then
+    # across (X Y); with TCP in one block (the tip's X Y Z, with which the
+    # control switches TCP and length on); in machine coordinates across
+    # at that height (X Y), then down (Z).
+    method Reach {a src} {
+        lassign $a joints P t
+        if {$S(plane) ne ""} {
+            return [list [my Move rapid $joints Z {} {} {} $src] [my Move rapid $joints {X Y} $P $t {} $src]]
+        }
+        if {$S(tcp)} {return [list [my Move rapid $joints {X Y Z} $P $t {} $src]]}
+        list [my Move rapid $joints {X Y} {} {} {} $src] [my Move rapid $joints {X Y Z} $P $t {} $src]
     }
 
     # Returns the point record clearance above point record b along its

@@ -158,7 +158,7 @@ oo::class create ::fivax::motion::Planner {
     # flush first: points still held would be posted for the new tool.
     # Errors: {FIVAX MOTION STATE} while points are held.
     # The tool then stands at the tool-change position: the next point is
-    # approached as a first point (rotaries, then X Y, then Z down).
+    # approached as a first point (see First).
     method setTool {len} {
         if {[llength $S(buf)]} {
             ::fivax::Fail MOTION STATE "setTool with [llength $S(buf)] CL points held: flush first"
