@@ -190,7 +190,8 @@ oo::class create ::fivax::output::Writer {
     # axis word first); S(length): the H register to activate with the
     # next Z move (0: none); S(tcpArmed): 1 when TCP comes on with the
     # next block that writes Z; S(tcpOn): TCP is active; S(loaded): a
-    # tool has been changed in;
+    # tool has been changed in; S(home): the rotaries stand at 0 (known
+    # so, while their modal memory is empty: see RotariesHome);
     # S(feedMode): inverse or direct of the last feed block; S(cycle): the
     # G code of the active canned cycle (0: none); S(pendingTool): the
     # Klartext tool whose TOOL CALL waits for its spindle speed;
@@ -224,6 +225,7 @@ oo::class create ::fivax::output::Writer {
         set S(rotaries) $names
         set S(length) 0
         set S(loaded) 0
+        set S(home) 0
         set S(tcpArmed) 0
         set S(tcpOn) 0
         set S(feedMode) direct
@@ -403,6 +405,7 @@ oo::class create ::fivax::output::Writer {
             lappend lines [$S(nc) block [list T $number M 6]]
         }
         $S(nc) reset
+        set S(home) 1
         set S(register) [dict get [dict create G43 $adjust D 1 call 0] $length]
         set S(length) $S(register)
         set S(loaded) 1
@@ -410,15 +413,17 @@ oo::class create ::fivax::output::Writer {
         return $lines
     }
 
-    # Returns 1 when both rotaries were last written as 0 (the modal
-    # memory forgets them at a tool change and a work plane's end: the
-    # control turned them for the plane).
+    # Returns 1 when both rotaries stand at 0: as last written, or when
+    # the modal memory has forgotten them (a tool change, a work plane),
+    # S(home).
     method RotariesHome {} {
+        set home 1
         foreach addr [expr {$S(klartext) ? {K4 K5} : {fourth_axis fifth_axis}}] {
             set v [$S(nc) value $addr]
-            if {$v eq "" || abs($v) >= 0.5 * 10.0 ** -[$S(nc) decimals $addr]} {return 0}
+            if {$v eq ""} {return $S(home)}
+            if {abs($v) >= 0.5 * 10.0 ** -[$S(nc) decimals $addr]} {set home 0}
         }
-        return 1
+        return $home
     }
 
     # Returns the rapid block that turns both rotaries to 0.
@@ -853,6 +858,7 @@ oo::class create ::fivax::output::Writer {
             }
         }
         set S(planeOn) 1
+        set S(home) 0
         # (the length compensation again with the plane's first Z move)
         set S(length) $S(register)
         $S(nc) reset
