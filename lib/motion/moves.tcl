@@ -97,14 +97,16 @@ oo::define ::fivax::motion::Planner {
     # stock: in a work plane along the tool axis (its Z) first, then
     # across (X Y); with TCP in one block (the tip's X Y Z, with which the
     # control switches TCP and length on); in machine coordinates across
-    # at that height (X Y), then down (Z).
+    # at that height (X Y), then down (Z). The move onto a is tagged
+    # approach.
     method Reach {a src} {
         lassign $a joints P t
+        set onto [my Move rapid $joints {X Y Z} $P $t {} $src approach]
         if {$S(plane) ne ""} {
-            return [list [my Move rapid $joints Z {} {} {} $src] [my Move rapid $joints {X Y} $P $t {} $src]]
+            return [list [my Move rapid $joints Z {} {} {} $src] [dict set onto write {X Y}]]
         }
-        if {$S(tcp)} {return [list [my Move rapid $joints {X Y Z} $P $t {} $src]]}
-        list [my Move rapid $joints {X Y} {} {} {} $src] [my Move rapid $joints {X Y Z} $P $t {} $src]
+        if {$S(tcp)} {return [list $onto]}
+        list [my Move rapid $joints {X Y} {} {} {} $src] $onto
     }
 
     # Returns the point record clearance above point record b along its

@@ -223,7 +223,9 @@ oo::class create ::fivax::motion::Planner {
     #   P t    the CL target in the workpiece frame (interpolated for
     #          linearisation points, on the tool axis line for retract
     #          and approach points; empty for positioning moves)
-    #   src    FILE:LINE of the CL record; tag "", inserted or reengage;
+    #   src    FILE:LINE of the CL record; tag "", inserted, reengage or
+    #          approach (the clearance point above an approach's first
+    #          point);
     #   note   the reason of a retract
     # A held work-plane segment (see frames.tcl) is posted: in its plane
     # when it cuts.
