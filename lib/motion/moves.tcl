@@ -129,18 +129,25 @@ oo::define ::fivax::motion::Planner {
     # Returns the rapid moves from point record a to point record b. A
     # change of orientation is sequenced safely: Z up to the safe height
     # (safe_z, else clearance above the higher end), rotate, X Y, then
-    # down.
-    method Transfer {a b src} {
+    # down: onto b itself when above is 0 (b is a clearance point), else
+    # onto the point clearance above b and from there down b's tool axis.
+    method Transfer {a b src {above 1}} {
         lassign $b joints P t
         set final [my Move rapid $joints {X Y Z R} $P $t {} $src]
         lassign [lindex $a 0] pX pY pZ p1 p2
         lassign $joints X Y Z q1 q2
         if {abs($q1 - $p1) < 1e-9 && abs($q2 - $p2) < 1e-9} {return [list $final]}
+        set down [list $final]
+        if {$above} {
+            lassign [my Above $b] jc Pc
+            lassign $jc X Y Z
+            set down [list [my Move rapid $jc {X Y Z} $Pc $t {} $src approach] $final]
+        }
         set safe $S(safeZ)
         if {$safe eq ""} {set safe [expr {max($pZ, $Z) + $S(clearance)}]}
         list [my Move rapid [list $pX $pY $safe $p1 $p2] Z {} {} {} $src] \
             [my Move rapid [list $pX $pY $safe $q1 $q2] R {} {} {} $src] \
-            [my Move rapid [list $X $Y $safe $q1 $q2] {X Y} {} {} {} $src] $final
+            [my Move rapid [list $X $Y $safe $q1 $q2] {X Y} {} {} {} $src] {*}$down
     }
 
     # Returns the moves from point record a to point record b when no
@@ -152,7 +159,7 @@ oo::define ::fivax::motion::Planner {
         incr S(retracts)
         lassign [my Above $a] jr Pr - ta
         set moves [list [my Move retract $jr {X Y Z} $Pr $ta {} $src "" $reason]]
-        lappend moves {*}[my Transfer [my Above $a] [my Above $b] $src]
+        lappend moves {*}[my Transfer [my Above $a] [my Above $b] $src 0]
         lappend moves [my Entry $b $f $src]
     }
 
