@@ -413,27 +413,37 @@ oo::class create ::fivax::output::Writer {
         return $lines
     }
 
-    # Returns 1 when both rotaries stand at 0: as last written, or when
-    # the modal memory has forgotten them (a tool change, a work plane),
-    # S(home).
+    # Returns 1 when both rotaries stand at home (see Home): as last
+    # written, or when the modal memory has forgotten them (a tool change,
+    # a work plane), S(home).
     method RotariesHome {} {
         set home 1
-        foreach addr [expr {$S(klartext) ? {K4 K5} : {fourth_axis fifth_axis}}] {
+        foreach {addr h} [my Home] {
             set v [$S(nc) value $addr]
             if {$v eq ""} {return $S(home)}
-            if {abs($v) >= 0.5 * 10.0 ** -[$S(nc) decimals $addr]} {set home 0}
+            if {abs($v - $h) >= 0.5 * 10.0 ** -[$S(nc) decimals $addr]} {set home 0}
         }
         return $home
     }
 
-    # Returns the rapid block that turns both rotaries to 0.
-    method HomeRotaries {} {
-        if {$S(klartext)} {
-            $S(nc) force once {K4 K5}
-            return [list [$S(nc) block {K4 0.0 K5 0.0} 1 {"L " " R0 FMAX"}]]
+    # Returns {address degrees ...}: the rotaries' home, 0 or the limit
+    # nearest to it when 0 is outside the limits (never a value outside).
+    method Home {} {
+        set home {}
+        foreach r $S(rotaries) addr [expr {$S(klartext) ? {K4 K5} : {fourth_axis fifth_axis}}] {
+            lassign [dict get $S(machine) limits [lindex $r 0]] lo hi
+            lappend home $addr [::fivax::num::deg [expr {min(max(0.0, $lo), $hi)}]]
         }
-        $S(nc) force once {G_motion fourth_axis fifth_axis}
-        list [$S(nc) block {G_motion 0 fourth_axis 0.0 fifth_axis 0.0}]
+        return $home
+    }
+
+    # Returns the rapid block that turns both rotaries home (see Home).
+    method HomeRotaries {} {
+        set home [my Home]
+        $S(nc) force once [dict keys $home]
+        if {$S(klartext)} {return [list [$S(nc) block $home 1 {"L " " R0 FMAX"}]]}
+        $S(nc) force once G_motion
+        list [$S(nc) block [list G_motion 0 {*}$home]]
     }
 
     # Returns the words that switch the armed length compensation on in a
