@@ -60,10 +60,13 @@ namespace eval ::fivax::output {
     #   comment    the comment form: paren "(text)", semicolon "; text"
     #              (G-code), or numbered "n ; text" (Klartext)
     #   safety     the words of the safety line ({} none)
+    #   reset      the lines after it that cancel a work plane and TCP a
+    #              previous program may have left on
     #   units      the G codes of mm and inch
     #   length     how tool length compensation comes on: G43 (G43 H with
-    #              the first Z move after a tool change), D (D1 in the tool
-    #              change block), call (Klartext TOOL CALL)
+    #              the first Z move after a tool change or a Z up in
+    #              machine coordinates), D (D1 with that Z move), call
+    #              (Klartext TOOL CALL)
     #   machineZ   Z up in machine coordinates: G53 (G0 G49 G53 Z), SUPA
     #              (G0 SUPA Z D0), M91 (L Z R0 FMAX M91)
     #   inverse    1: inverse-time feed (G93) exists
@@ -91,7 +94,7 @@ namespace eval ::fivax::output {
     variable Dialects {
         fanuc {
             syntax gcode program O%04d percent 1 comment paren
-            safety {G_cutcom 40 G_length 49 G_cycle 80} units {21 20}
+            safety {G_cutcom 40 G_length 49 G_cycle 80} reset {G69} units {21 20}
             length G43 machineZ G53 inverse 1
             tcp {on G43.4 off G49} plane g68.2 arcs {planes {17 18 19} helix 1}
             dwell P_ms
@@ -103,7 +106,7 @@ namespace eval ::fivax::output {
         }
         sinumerik {
             syntax gcode program {} percent 0 comment semicolon
-            safety {G_cutcom 40} units {71 70}
+            safety {G_cutcom 40} reset {TRAFOOF CYCLE800()} units {71 70}
             length D machineZ SUPA inverse 1
             tcp {on {TRAORI ORIWKS ORIAXES} off {TRAFOOF}} plane cycle800
             arcs {planes {17 18 19} helix 1}
@@ -115,7 +118,7 @@ namespace eval ::fivax::output {
         }
         heidenhain {
             syntax klartext program {} percent 0 comment numbered
-            safety {} units {MM INCH}
+            safety {} reset {{FUNCTION RESET TCPM} {PLANE RESET STAY}} units {MM INCH}
             length call machineZ M91 inverse 0
             tcp {on {{FUNCTION TCPM F TCP AXIS POS PATHCTRL AXIS}} off {{FUNCTION RESET TCPM}}}
             plane spatial arcs {planes {17} helix 0}
@@ -127,7 +130,7 @@ namespace eval ::fivax::output {
         }
         linuxcnc {
             syntax gcode program {} percent 1 comment paren
-            safety {G_cutcom 40 G_length 49 G_cycle 80} units {21 20}
+            safety {G_cutcom 40 G_length 49 G_cycle 80} reset {} units {21 20}
             length G43 machineZ G53 inverse 1
             tcp {} plane {} arcs {planes {17 18 19} helix 1}
             dwell P_s
@@ -193,7 +196,9 @@ oo::class create ::fivax::output::Writer {
     # S(rotaries): {name chainIndex rollover} in output order (the 4th
     # axis word first); S(length): the H register to activate with the
     # next Z move (0: none); S(tcpArmed): 1 when TCP comes on with the
-    # next block that writes X, Y or Z; S(tcpOn): TCP is active;
+    # next block that writes Z; S(tcpOn): TCP is active; S(loaded): a
+    # tool has been changed in; S(home): the rotaries stand at 0 (known
+    # so, while their modal memory is empty: see RotariesHome);
     # S(feedMode): inverse or direct of the last feed block; S(cycle): the
     # G code of the active canned cycle (0: none); S(pendingTool): the
     # Klartext tool whose TOOL CALL waits for its spindle speed;
@@ -226,6 +231,8 @@ oo::class create ::fivax::output::Writer {
         }
         set S(rotaries) $names
         set S(length) 0
+        set S(loaded) 0
+        set S(home) 0
         set S(tcpArmed) 0
         set S(tcpOn) 0
         set S(feedMode) direct
@@ -330,15 +337,17 @@ oo::class create ::fivax::output::Writer {
 
     # Returns the program-start lines: the dialect's program header
     # carrying comment (Klartext: BEGIN PGM name), the safety line (no
-    # cutter, length or cycle compensation active), units, absolute mode,
-    # feed mode and plane, then the machine's work offset.
+    # cutter, length or cycle compensation active), the resets of work
+    # plane and TCP (see Resets), units, absolute mode, feed mode and
+    # plane, then the machine's work offset.
     method start {comment {name PART}} {
         lassign [dict get $S(dialect) units] mm inch
         set unit [expr {[dict get $S(machine) units] eq "inch" ? $inch : $mm}]
         if {$S(klartext)} {
             set S(program) [regsub -all {[^A-Za-z0-9_]} $name _]
             if {$S(program) eq ""} {set S(program) PART}
-            return [list [$S(nc) line "BEGIN PGM $S(program) $unit"] [my comment $comment]]
+            return [concat [list [$S(nc) line "BEGIN PGM $S(program) $unit"] [my comment $comment]] \
+                [my Resets]]
         }
         set lines {}
         if {[dict get $S(dialect) percent]} {lappend lines %}
@@ -356,8 +365,22 @@ oo::class create ::fivax::output::Writer {
         if {[llength [dict get $S(dialect) safety]]} {
             lappend lines [$S(nc) block [dict get $S(dialect) safety]]
         }
+        lappend lines {*}[my Resets]
         lappend lines [$S(nc) block [list G_units $unit G_mode 90 G_feed 94 G_plane 17]] \
             [$S(nc) block [list G_wcs [dict get $S(machine) work_offset]]]
+    }
+
+    # Returns the lines that cancel, at the program start, a work plane
+    # and TCP a previous program may have left on: the dialect's reset
+    # lines (G69; TRAFOOF, CYCLE800(); FUNCTION RESET TCPM, PLANE RESET
+    # STAY), and the machine's TCP-off M code where the control has no TCP
+    # of its own (LinuxCNC's tcp_codes).
+    method Resets {} {
+        set lines [lmap text [dict get $S(dialect) reset] {$S(nc) line $text}]
+        if {[dict get $S(dialect) tcp] eq "" && [llength [dict get $S(machine) tcp_codes]]} {
+            lappend lines [$S(nc) line M[lindex [dict get $S(machine) tcp_codes] 1]]
+        }
+        return $lines
     }
 
     # Returns text as one comment line in the dialect's style (G-code:
@@ -372,32 +395,80 @@ oo::class create ::fivax::output::Writer {
     }
 
     # Returns the tool change blocks for tool number: Z up to the
-    # tool-change height (see safeZ), then the dialect's change (T M6;
-    # Sinumerik T M6 D1; Klartext TOOL CALL, written with the spindle
-    # speed when it comes, see spindle); arms the length compensation
-    # register adjust (0: none) for the next Z move, and TCP mode for the
+    # tool-change height (see safeZ), the rotaries to 0 unless they are
+    # known to stand there (see RotariesHome), then the dialect's change
+    # (T M6; Klartext TOOL CALL, written with the spindle speed when it
+    # comes, see spindle); arms the length compensation (register adjust,
+    # 0: none; Sinumerik D1) for the next Z move, and TCP mode for the
     # next X Y Z block. Modal memory is reset: everything is written
     # again after a tool change.
     method toolChange {number adjust} {
         set lines [my safeZ]
-        switch -exact -- [dict get $S(dialect) length] {
-            G43 {lappend lines [$S(nc) block [list T $number M 6]]}
-            D {lappend lines [$S(nc) block [list T $number M 6 D 1]]}
-            call {set S(pendingTool) $number}
+        if {![my RotariesHome]} {lappend lines {*}[my HomeRotaries]}
+        set length [dict get $S(dialect) length]
+        if {$length eq "call"} {
+            set S(pendingTool) $number
+        } else {
+            lappend lines [$S(nc) block [list T $number M 6]]
         }
         $S(nc) reset
-        set S(register) [expr {[dict get $S(dialect) length] eq "G43" ? $adjust : 0}]
+        set S(home) 1
+        set S(register) [dict get [dict create G43 $adjust D 1 call 0] $length]
         set S(length) $S(register)
+        set S(loaded) 1
         set S(tcpArmed) [dict get $S(cfg) -tcp]
         return $lines
+    }
+
+    # Returns 1 when both rotaries stand at home (see Home): as last
+    # written, or when the modal memory has forgotten them (a tool change,
+    # a work plane), S(home).
+    method RotariesHome {} {
+        set home 1
+        foreach {addr h} [my Home] {
+            set v [$S(nc) value $addr]
+            if {$v eq ""} {return $S(home)}
+            if {abs($v - $h) >= 0.5 * 10.0 ** -[$S(nc) decimals $addr]} {set home 0}
+        }
+        return $home
+    }
+
+    # Returns {address degrees ...}: the rotaries' home, 0 or the limit
+    # nearest to it when 0 is outside the limits (never a value outside).
+    method Home {} {
+        set home {}
+        foreach r $S(rotaries) addr [expr {$S(klartext) ? {K4 K5} : {fourth_axis fifth_axis}}] {
+            lassign [dict get $S(machine) limits [lindex $r 0]] lo hi
+            lappend home $addr [::fivax::num::deg [expr {min(max(0.0, $lo), $hi)}]]
+        }
+        return $home
+    }
+
+    # Returns the rapid block that turns both rotaries home (see Home).
+    method HomeRotaries {} {
+        set home [my Home]
+        $S(nc) force once [dict keys $home]
+        if {$S(klartext)} {return [list [$S(nc) block $home 1 {"L " " R0 FMAX"}]]}
+        $S(nc) force once G_motion
+        list [$S(nc) block [list G_motion 0 {*}$home]]
+    }
+
+    # Returns the words that switch the armed length compensation on in a
+    # block with a Z move: G43 H<register>, or Sinumerik's D<n>.
+    method LengthWords {} {
+        set n $S(length)
+        set S(length) 0
+        if {[dict get $S(dialect) length] eq "D"} {return [list D $n]}
+        list G_length 43 H $n
     }
 
     # Returns the blocks that take the spindle up to the machine's
     # tool-change height with TCP and length compensation cancelled (in
     # machine coordinates: G0 G49 G53 Z<tool_change_z>, Sinumerik G0 SUPA
     # Z D0, Klartext L Z R0 FMAX M91), ending an active cycle first. The
-    # written Z is forgotten: the next Z is in the work frame.
-    # Nothing when nothing has moved since the last one.
+    # written Z is forgotten: the next Z is in the work frame, and the
+    # length compensation (and TCP mode, once a tool is loaded) come on
+    # again with it. Nothing when nothing has moved since the last one.
     method safeZ {} {
         if {$S(atSafe)} {return {}}
         set S(atSafe) 1
@@ -406,7 +477,6 @@ oo::class create ::fivax::output::Writer {
         set z [dict get $S(machine) tool_change_z]
         switch -exact -- [dict get $S(dialect) machineZ] {
             G53 {
-                set S(length) 0
                 $S(nc) force once {G_motion Z}
                 # (Fanuc's TCP off is G49 in a block of its own)
                 set g49 [expr {[llength $off] && [dict get $S(dialect) tcp] ne "" ? {} : {G_length 49}}]
@@ -422,6 +492,8 @@ oo::class create ::fivax::output::Writer {
             }
         }
         $S(nc) reset [expr {$S(klartext) ? "KZ" : "Z"}]
+        set S(length) $S(register)
+        set S(tcpArmed) [expr {$S(loaded) && [dict get $S(cfg) -tcp]}]
         return $lines
     }
 
@@ -684,16 +756,15 @@ oo::class create ::fivax::output::Writer {
             return $lines
         }
         set words [list G_motion $isFeed]
-        if {$S(tcpArmed) && $S(tcpInBlock)
-                && [llength [lmap a {X Y Z} {if {$a in $write} {set a} else continue}]]} {
-            # TCP on (Fanuc): G43.4 H with the first X Y Z block
+        if {$S(tcpArmed) && $S(tcpInBlock) && "Z" in $write} {
+            # TCP on (Fanuc): G43.4 H with the first Z block (the
+            # approach's X Y Z, see ::fivax::motion First)
             lappend words G_length 43.4 H $S(length)
             set S(length) 0
             set S(tcpArmed) 0
             set S(tcpOn) 1
         } elseif {$S(length) && "Z" in $write} {
-            lappend words G_length 43 H $S(length)
-            set S(length) 0
+            lappend words {*}[my LengthWords]
         }
         if {$isFeed} {
             # (single-value lappends, as in AxisWords)
@@ -804,9 +875,10 @@ oo::class create ::fivax::output::Writer {
 
     # Returns the blocks that tilt the work plane of a plane record
     # (matrix R: columns X' Y' Z', origin O, seq: the sign the control's
-    # tilt takes): Z up, then Fanuc G68.2 X Y Z I J K (Euler ZXZ) + G53.1
-    # and G43 again with the next Z; Sinumerik CYCLE800 (mode 57);
-    # Klartext PLANE SPATIAL .. TURN MB MAX FMAX SEQ. The rotaries turn
+    # tilt takes): Z up, then Fanuc G68.2 X Y Z I J K (Euler ZXZ) + G53.1;
+    # Sinumerik CYCLE800 (mode 57);
+    # Klartext PLANE SPATIAL .. TURN MB MAX FMAX SEQ; the length
+    # compensation again with the next Z (G43 H, D). The rotaries turn
     # without being written: their modal memory is cleared.
     method PlaneOn {rec} {
         set form [dict get $S(dialect) plane]
@@ -819,13 +891,11 @@ oo::class create ::fivax::output::Writer {
                 lassign $angles i j k
                 lappend lines [$S(nc) block [list G_rot 68.2 X $ox Y $oy Z $oz E_i $i E_j $j E_k $k]] \
                     [$S(nc) block {G_tilt 53.1}]
-                set S(length) $S(register)
             }
             cycle800 {
                 set a [lmap v [concat [list $ox $oy $oz] $angles] {::fivax::num::fixed $v 4}]
                 lassign $a x y z aa bb cc
-                lappend lines [$S(nc) line "CYCLE800(1,\"[dict get $S(machine) swivel_record]\",0,57,$x,$y,$z,$aa,$bb,$cc,0,0,0,[dict get $rec seq],100,1)"] \
-                    [$S(nc) block {D 1}]
+                lappend lines [$S(nc) line "CYCLE800(1,\"[dict get $S(machine) swivel_record]\",0,57,$x,$y,$z,$aa,$bb,$cc,0,0,0,[dict get $rec seq],100,1)"]
             }
             spatial {
                 lassign $angles a b c
@@ -833,6 +903,9 @@ oo::class create ::fivax::output::Writer {
             }
         }
         set S(planeOn) 1
+        set S(home) 0
+        # (the length compensation again with the plane's first Z move)
+        set S(length) $S(register)
         $S(nc) reset
         return $lines
     }
@@ -858,15 +931,7 @@ oo::class create ::fivax::output::Writer {
     # % where the dialect has it.
     method end {} {
         set lines [concat [my PlaneOff] [my safeZ]]
-        if {[dict get $S(machine) home_rotaries]} {
-            if {$S(klartext)} {
-                $S(nc) force once {K4 K5}
-                lappend lines [$S(nc) block {K4 0.0 K5 0.0} 1 {"L " " R0 FMAX"}]
-            } else {
-                $S(nc) force once {G_motion fourth_axis fifth_axis}
-                lappend lines [$S(nc) block {G_motion 0 fourth_axis 0.0 fifth_axis 0.0}]
-            }
-        }
+        if {[dict get $S(machine) home_rotaries]} {lappend lines {*}[my HomeRotaries]}
         if {$S(klartext)} {
             lassign [dict get $S(dialect) units] mm inch
             set unit [expr {[dict get $S(machine) units] eq "inch" ? $inch : $mm}]

@@ -135,11 +135,13 @@ proc ReplayOptions {argList} {
 #	  a comment;
 #	- every tool change (M6, TOOL CALL) right after a block taking Z up
 #	  in machine coordinates (G53 Z, SUPA Z, M91), work-plane and TCP
-#	  cancels aside, and the program's first motion such a block;
+#	  cancels and the rotaries' move home aside, and the program's first
+#	  motion such a block;
 #	- the approach after it: rotaries alone, then X Y alone, then the
-#	  first Z move alone (Fanuc, LinuxCNC: with G43 or G43.4 since the
-#	  tool change; Sinumerik's D and Klartext's TOOL CALL compensate the
-#	  length themselves), before any cut
+#	  first Z move alone (with TCP it may carry X Y: the tip's X Y Z in
+#	  one block; Fanuc, LinuxCNC: with G43 or G43.4 since the tool change;
+#	  Sinumerik's D and Klartext's TOOL CALL compensate the length
+#	  themselves), before any cut
 #	  (whether the first cut is the post's entry down the tool axis or
 #	  the CL's own move the text cannot tell: program.test checks the
 #	  entry by forward kinematics);
@@ -222,7 +224,11 @@ proc programProblems {path machineFile {controller ""}} {
                     dict set modal $l $v
                 }
             }
-            set prevBlock [list $machineZ $hasZ]
+            # (the rotaries' move home between the Z up and the tool change)
+            set rotOnly [expr {[llength $words] && ![llength [lmap {l v} $words {
+                if {$l in {X Y Z} || ($l ni $rotaries && $l ni {G N})} {set l} else continue
+            }]]}]
+            if {!($rotOnly && $prevBlock eq {1 1})} {set prevBlock [list $machineZ $hasZ]}
             if {![llength [dict get $blk moved]]} continue
             if {!$motions} {
                 foreach g $safety {
@@ -247,7 +253,9 @@ proc programProblems {path machineFile {controller ""}} {
             set z [expr {"Z" in $changed}]
             if {$approach && !$cut} {
                 if {$z} {
-                    if {$xy || $rot} {lappend problems "$n: the approach's first Z move moves more than Z"}
+                    if {$rot || ($xy && [dict get $blk space] ne "tcp")} {
+                        lappend problems "$n: the approach's first Z move moves more than Z"
+                    }
                     if {$toolChanged && $gLength && !$lengthOn} {
                         lappend problems "$n: no G43 or G43.4 from the tool change to the first Z move"
                     }

@@ -78,19 +78,35 @@ oo::define ::fivax::motion::Planner {
             feed $f mode $mode rate $rate tip $tip P $P t $t src $src tag $tag note $note
     }
 
-    # Returns the moves to the very first point b (a point record): a
-    # rapid rotates first, then moves X Y, then Z; a feed goes straight.
-    # A first feed point is approached from clearance above it along the
-    # tool axis (never a first move that feeds from an unknown position),
-    # the last clearance at the entry feed.
+    # Returns the moves to the very first point b (a point record) of kind
+    # rapid or feed, from the tool-change height with unknown X Y: the
+    # rotaries turn first (at that height), then the tool reaches the
+    # point clearance above b along its tool axis (Reach), and goes down
+    # that axis onto b (a feed at the entry feed: never a first move that
+    # feeds from an unknown position).
     method First {kind b feed src} {
-        if {$kind eq "feed"} {
-            set a [my Above $b]
-            return [concat [my First rapid $a 0.0 $src] [list [my Entry $b $feed $src]]]
-        }
+        set a [my Above $b]
+        set moves [list [my Move rapid [lindex $a 0] R {} {} {} $src] {*}[my Reach $a $src]]
+        if {$kind eq "feed"} {return [lappend moves [my Entry $b $feed $src]]}
         lassign $b joints P t
-        list [my Move rapid $joints R {} {} {} $src] [my Move rapid $joints {X Y} {} {} {} $src] \
-            [my Move rapid $joints {X Y Z R} $P $t {} $src]
+        lappend moves [my Move rapid $joints {X Y Z R} $P $t {} $src]
+    }
+
+    # Returns the rapid moves from the tool-change height (X Y unknown,
+    # the rotaries already those of point record a) to a, each above the
+    # stock: in a work plane along the tool axis (its Z) first, then
+    # across (X Y); with TCP in one block (the tip's X Y Z, with which the
+    # control switches TCP and length on); in machine coordinates across
+    # at that height (X Y), then down (Z). The move onto a is tagged
+    # approach.
+    method Reach {a src} {
+        lassign $a joints P t
+        set onto [my Move rapid $joints {X Y Z} $P $t {} $src approach]
+        if {$S(plane) ne ""} {
+            return [list [my Move rapid $joints Z {} {} {} $src] [dict set onto write {X Y}]]
+        }
+        if {$S(tcp)} {return [list $onto]}
+        list [my Move rapid $joints {X Y} {} {} {} $src] $onto
     }
 
     # Returns the point record clearance above point record b along its
@@ -113,18 +129,25 @@ oo::define ::fivax::motion::Planner {
     # Returns the rapid moves from point record a to point record b. A
     # change of orientation is sequenced safely: Z up to the safe height
     # (safe_z, else clearance above the higher end), rotate, X Y, then
-    # down.
-    method Transfer {a b src} {
+    # down: onto b itself when above is 0 (b is a clearance point), else
+    # onto the point clearance above b and from there down b's tool axis.
+    method Transfer {a b src {above 1}} {
         lassign $b joints P t
         set final [my Move rapid $joints {X Y Z R} $P $t {} $src]
         lassign [lindex $a 0] pX pY pZ p1 p2
         lassign $joints X Y Z q1 q2
         if {abs($q1 - $p1) < 1e-9 && abs($q2 - $p2) < 1e-9} {return [list $final]}
+        set down [list $final]
+        if {$above} {
+            lassign [my Above $b] jc Pc
+            lassign $jc X Y Z
+            set down [list [my Move rapid $jc {X Y Z} $Pc $t {} $src approach] $final]
+        }
         set safe $S(safeZ)
         if {$safe eq ""} {set safe [expr {max($pZ, $Z) + $S(clearance)}]}
         list [my Move rapid [list $pX $pY $safe $p1 $p2] Z {} {} {} $src] \
             [my Move rapid [list $pX $pY $safe $q1 $q2] R {} {} {} $src] \
-            [my Move rapid [list $X $Y $safe $q1 $q2] {X Y} {} {} {} $src] $final
+            [my Move rapid [list $X $Y $safe $q1 $q2] {X Y} {} {} {} $src] {*}$down
     }
 
     # Returns the moves from point record a to point record b when no
@@ -136,7 +159,7 @@ oo::define ::fivax::motion::Planner {
         incr S(retracts)
         lassign [my Above $a] jr Pr - ta
         set moves [list [my Move retract $jr {X Y Z} $Pr $ta {} $src "" $reason]]
-        lappend moves {*}[my Transfer [my Above $a] [my Above $b] $src]
+        lappend moves {*}[my Transfer [my Above $a] [my Above $b] $src 0]
         lappend moves [my Entry $b $f $src]
     }
 

@@ -161,7 +161,7 @@ oo::class create ::fivax::motion::Planner {
     # flush first: points still held would be posted for the new tool.
     # Errors: {FIVAX MOTION STATE} while points are held.
     # The tool then stands at the tool-change position: the next point is
-    # approached as a first point (rotaries, then X Y, then Z down).
+    # approached as a first point (see First).
     method setTool {len} {
         if {[llength $S(buf)]} {
             ::fivax::Fail MOTION STATE "setTool with [llength $S(buf)] CL points held: flush first"
@@ -226,7 +226,9 @@ oo::class create ::fivax::motion::Planner {
     #   P t    the CL target in the workpiece frame (interpolated for
     #          linearisation points, on the tool axis line for retract
     #          and approach points; empty for positioning moves)
-    #   src    FILE:LINE of the CL record; tag "", inserted or reengage;
+    #   src    FILE:LINE of the CL record; tag "", inserted, reengage or
+    #          approach (the clearance point above an approach's first
+    #          point);
     #   note   the reason of a retract
     # A held work-plane segment (see frames.tcl) is posted: in its plane
     # when it cuts.
