@@ -58,6 +58,8 @@ namespace eval ::fivax::dryrun {
     # this many cells (20 to 40 mm on a 300 mm part).
     variable nearCells 8
     variable minCell 0.25
+    # The height of a cell with no stock.
+    variable air -1e9
     # How far (mm) a body may dip below the stock's surface or the table
     # before it counts (the written words' rounding).
     variable eps 0.05
@@ -359,6 +361,7 @@ proc ::fivax::dryrun::Geometry {} {
     variable R
     set box [dict get $R(opts) -stock]
     set tableGiven [expr {[dict get $R(machine) table_top] ne "" || $box ne ""}]
+    set R(estimated) [expr {$box eq ""}]
     if {$box eq ""} {
         set tips [CutTips]
         set box [CutBox $tips]
@@ -367,8 +370,12 @@ proc ::fivax::dryrun::Geometry {} {
     lassign $box x0 y0 z0 x1 y1 z1
     set R(table) [dict get $R(machine) table_top]
     if {$R(table) eq ""} {set R(table) [expr {min($z0, $z1)}]}
+    set radius 0.0
+    foreach move $R(moves) {
+        if {[lindex $move 0] ne "switch"} {set radius [expr {max($radius, [lindex $move 8 1])}]}
+    }
     Grid [expr {min($x0, $x1)}] [expr {min($y0, $y1)}] [expr {max($x0, $x1)}] \
-        [expr {max($y0, $y1)}] [expr {max($z0, $z1)}]
+        [expr {max($y0, $y1)}] [expr {max($z0, $z1)}] $radius
     if {[info exists tips]} {LocalTops $tips}
     set R(cutterToTable) $tableGiven
     foreach move $R(moves) {
@@ -388,9 +395,11 @@ proc ::fivax::dryrun::Geometry {} {
 }
 
 # ::fivax::dryrun::CutTips --
-#	Returns {x y z r ...}: the tips of the cutting moves (feed moves that
-#	do not back out along the tool axis, arcs at their points, hole
-#	bottoms) with the tool radius.
+#	Returns {x y z up ...}: the tips of the cutting moves (feed moves
+#	that do not back out along the tool axis, arcs at their points, hole
+#	bottoms), up 1 when the tool axis is within 60 deg
+#	of +Z (a tip that tells the stock's top: a side cut with a level tool
+#	often starts in the air above the part).
 proc ::fivax::dryrun::CutTips {} {
     variable R
     set out {}
@@ -401,40 +410,48 @@ proc ::fivax::dryrun::CutTips {} {
         lassign $to P t
         set d [::fivax::vec::sub $P $P0]
         if {$kind eq "cut" && [::fivax::vec::dot $d $t] > 0.5 * [::fivax::vec::norm $d]} continue
-        set r [lindex $tool 1]
+        set up [expr {[lindex $t 2] >= 0.5}]
         foreach q [concat [lmap pose $path {lindex $pose 0}] [list $P]] {
-            lappend out {*}$q $r
+            lappend out {*}$q $up
         }
     }
     return $out
 }
 
 # ::fivax::dryrun::CutBox --
-#	Returns the box {x0 y0 z0 x1 y1 z1} of the tips {x y z r ...} grown
-#	sideways by their tool radius r, or "" when there are none.
+#	Returns the box {x0 y0 z0 x1 y1 z1} of the tips {x y z up ...}, its
+#	top the highest tip with up 1 (the highest of all when none has), or
+#	"" when there are none. (Not grown by the tool radius: a facing pass
+#	runs over the part's edge and a profile's tips are a radius outside
+#	it already, so that a grown box swallows the approach points beside
+#	the part.)
 proc ::fivax::dryrun::CutBox {tips} {
     if {![llength $tips]} {return ""}
     lassign $tips x y z
     set box [list $x $y $z $x $y $z]
-    foreach {x y z r} $tips {
+    set top ""
+    foreach {x y z up} $tips {
         lassign $box a b c d e f
-        set box [list [expr {min($a, $x - $r)}] [expr {min($b, $y - $r)}] [expr {min($c, $z)}] \
-            [expr {max($d, $x + $r)}] [expr {max($e, $y + $r)}] [expr {max($f, $z)}]]
+        set box [list [expr {min($a, $x)}] [expr {min($b, $y)}] [expr {min($c, $z)}] \
+            [expr {max($d, $x)}] [expr {max($e, $y)}] [expr {max($f, $z)}]]
+        if {$up && ($top eq "" || $z > $top)} {set top $z}
     }
+    if {$top ne ""} {lset box 5 $top}
     return $box
 }
 
 # ::fivax::dryrun::LocalTops --
 #	Lowers each cell of the height map to the highest of the tips {x y z
-#	r ...} in its block of near cells and the 8 blocks around (blocks of
-#	nearCells cells): the program tells the stock's top near where it
-#	cuts (a second pocket deeper than the first has its own top); a cell
-#	with no cut near keeps the box's top.
+#	up ...} with up 1 in its block of nearCells cells and the 8
+#	blocks around: the program tells the stock's top near where it cuts
+#	(a second pocket deeper than the first has its own top); a cell with
+#	no such cut near keeps the box's top.
 proc ::fivax::dryrun::LocalTops {tips} {
     variable R
     variable nearCells
     set b [expr {$R(cell) * $nearCells}]
-    foreach {x y z r} $tips {
+    foreach {x y z up} $tips {
+        if {!$up} continue
         set key [expr {int(floor(($x - $R(gx0)) / $b))}],[expr {int(floor(($y - $R(gy0)) / $b))}]
         if {![info exists high($key)] || $high($key) < $z} {set high($key) $z}
     }
@@ -447,23 +464,34 @@ proc ::fivax::dryrun::LocalTops {tips} {
                 set key [expr {$bi + $di}],[expr {$bj + $dj}]
                 if {[info exists high($key)] && ($top eq "" || $high($key) > $top)} {set top $high($key)}
             }
-            if {$top ne ""} {lset R(H) [expr {$j * $R(nx) + $i}] $top}
+            set k [expr {$j * $R(nx) + $i}]
+            if {$top ne "" && $top < [lindex $R(H) $k]} {lset R(H) $k $top}
         }
     }
 }
 
 # ::fivax::dryrun::Grid --
-#	Sets up the height map over x0..x1, y0..y1, every cell at top.
-proc ::fivax::dryrun::Grid {x0 y0 x1 y1 top} {
+#	Sets up the height map over x0..x1, y0..y1, every cell at top: cells
+#	of a cells'th of the longer side, at least a quarter of the largest
+#	tool radius (a sphere then covers some 80 cells).
+proc ::fivax::dryrun::Grid {x0 y0 x1 y1 top radius} {
     variable R
+    variable air
     variable cells
     variable minCell
-    set c [expr {max($minCell, max($x1 - $x0, $y1 - $y0) / double($cells))}]
+    set c [expr {max($minCell, $radius / 4.0, max($x1 - $x0, $y1 - $y0) / double($cells))}]
     set R(cell) $c
     set R(nx) [expr {max(1, int(ceil(($x1 - $x0) / $c)))}]
     set R(ny) [expr {max(1, int(ceil(($y1 - $y0) / $c)))}]
     lassign [list $x0 $y0 $x1 $y1 $top] R(gx0) R(gy0) R(gx1) R(gy1) R(top)
-    set R(H) [lrepeat [expr {$R(nx) * $R(ny)}] [expr {double($top)}]]
+    # (the cells whose centres lie beyond the box are air)
+    set row [lmap i [lrepeat $R(nx) 0] {
+        expr {$x0 + ([incr k] - 0.5) * $c > $x1 ? $air : double($top)}
+    }]
+    set R(H) {}
+    for {set j 0} {$j < $R(ny)} {incr j} {
+        lappend R(H) {*}[expr {$y0 + ($j + 0.5) * $c > $y1 ? [lrepeat $R(nx) $air] : $row}]
+    }
 }
 
 # ::fivax::dryrun::Move --
@@ -556,6 +584,10 @@ proc ::fivax::dryrun::Follow {kind n poses tool} {
     variable R
     variable eps
     lassign $tool len r
+    # (the default stock is known to about a tool radius at its edges: a
+    # profile's tips lie a radius outside the part, a facing pass runs
+    # over its edge)
+    set margin [expr {$R(estimated) ? max($eps, $r) : $eps}]
     foreach pose $poses {
         set bodies [Bodies $pose $len $r]
         if {$kind eq "cut"} {
@@ -567,7 +599,7 @@ proc ::fivax::dryrun::Follow {kind n poses tool} {
         foreach body $bodies {
             lassign $body name a b rr
             if {$name ne "cutter" || $kind eq "rapid"} {
-                set z [Below $a $b $rr]
+                set z [Below $a $b $rr $margin]
                 if {$z ne ""} {
                     lassign [lindex $pose 0] x y tz
                     Event $n [expr {$name eq "cutter" ? "rapid" : "collision"}] [::format \
@@ -647,10 +679,9 @@ proc ::fivax::dryrun::Discs {a b r} {
 # ::fivax::dryrun::Below --
 #	Returns {x y z h}: the first point of the capsule a-b of radius r
 #	(the spheres about its axis) that is below the stock's surface h
-#	there by more than eps, or "".
-proc ::fivax::dryrun::Below {a b r} {
+#	there by more than margin, or "".
+proc ::fivax::dryrun::Below {a b r margin} {
     variable R
-    variable eps
     set stencil [Stencil $r 0]
     foreach {x y z} [Discs $a $b $r] {
         lassign [Cell $x $y] ci cj
@@ -659,7 +690,7 @@ proc ::fivax::dryrun::Below {a b r} {
             set j [expr {$cj + $dj}]
             if {$i < 0 || $j < 0 || $i >= $R(nx) || $j >= $R(ny)} continue
             set h [lindex $R(H) [expr {$j * $R(nx) + $i}]]
-            if {$h > $z - $dz + $eps} {return [list $x $y [expr {$z - $dz}] $h]}
+            if {$h > $z - $dz + $margin} {return [list $x $y [expr {$z - $dz}] $h]}
         }
     }
     return ""
