@@ -216,13 +216,16 @@ proc ::fivax::dryrun::ReadLine {checker line n} {
         }
     }
     set pose [dict get $blk pose]
-    if {$pose ne "" && $R(pose) ne ""} {
+    if {$pose ne ""} {
+        # (from an unknown position: the end only)
+        set from [expr {$R(pose) eq "" ? $pose : $R(pose)}]
+        set j0 [expr {$R(pose) eq "" ? [dict get $blk joints] : $R(joints)}]
         set kind [expr {$hole ? "hole" : ($motion == 0 ? "rapid" : "cut")}]
         set path {}
         if {[dict get $blk arc] ne ""} {
             set path [ArcPoses $checker [dict get $blk arc] [dict get $blk words] $pose]
         }
-        lappend R(moves) [list $kind $n $R(pose) $pose $R(joints) [dict get $blk joints] \
+        lappend R(moves) [list $kind $n $from $pose $j0 [dict get $blk joints] \
             $space $R(model) [list $R(length) $R(radius)] $path]
     }
     set R(pose) $pose
@@ -336,7 +339,7 @@ proc ::fivax::dryrun::SetLength {checker len} {
 proc ::fivax::dryrun::ToolComment {checker text n} {
     variable R
     set num {([-+]?[0-9]*\.?[0-9]+)}
-    if {![regexp "^\\s*FIVAX TOOL (\\d+) LENGTH $num(?: RADIUS $num)?\\s*\$" $text -> tool len rad]} {
+    if {![regexp "^\\s*FIVAX TOOL (\\d+) LENGTH ${num}(?: RADIUS ${num})?\\s*\$" $text -> tool len rad]} {
         Event $n unreadable "tool comment not understood: $text"
         return
     }
@@ -599,7 +602,7 @@ proc ::fivax::dryrun::Follow {kind n poses tool} {
         foreach body $bodies {
             lassign $body name a b rr
             if {$name ne "cutter" || $kind eq "rapid"} {
-                set z [Below $a $b $rr $margin]
+                set z [Below $a $b $rr $margin [expr {$name ne "cutter"}]]
                 if {$z ne ""} {
                     lassign [lindex $pose 0] x y tz
                     Event $n [expr {$name eq "cutter" ? "rapid" : "collision"}] [::format \
@@ -678,19 +681,30 @@ proc ::fivax::dryrun::Discs {a b r} {
 
 # ::fivax::dryrun::Below --
 #	Returns {x y z h}: the first point of the capsule a-b of radius r
-#	(the spheres about its axis) that is below the stock's surface h
-#	there by more than margin, or "".
-proc ::fivax::dryrun::Below {a b r margin} {
+#	that is below the stock's surface h there by more than margin, or
+#	"". The cutter (flat 0) is the spheres about its axis; the other
+#	bodies (flat 1) have flat ends: discs across the axis, whose rim
+#	dips by the tilt.
+proc ::fivax::dryrun::Below {a b r margin flat} {
     variable R
     set stencil [Stencil $r 0]
-    foreach {x y z} [Discs $a $b $r] {
+    set slope 0.0
+    if {$flat} {
+        # the drop of the tilted disc per unit of horizontal distance
+        set d [::fivax::vec::sub $b $a]
+        set n [::fivax::vec::norm $d]
+        set k [expr {$n > 0 ? abs([lindex $d 2]) / $n : 1.0}]
+        set slope [expr {$k > 0.1 ? sqrt(max(0.0, 1.0 - $k * $k)) / $k : 10.0}]
+    }
+    foreach {x y z} [Discs $a $b [expr {$flat ? 0.0 : $r}]] {
         lassign [Cell $x $y] ci cj
-        foreach {di dj dz} $stencil {
+        foreach {di dj dz dd} $stencil {
             set i [expr {$ci + $di}]
             set j [expr {$cj + $dj}]
             if {$i < 0 || $j < 0 || $i >= $R(nx) || $j >= $R(ny)} continue
             set h [lindex $R(H) [expr {$j * $R(nx) + $i}]]
-            if {$h > $z - $dz + $margin} {return [list $x $y [expr {$z - $dz}] $h]}
+            set low [expr {$flat ? $z - min($r, $dd * $slope) : $z - $dz}]
+            if {$h > $low + $margin} {return [list $x $y $low $h]}
         }
     }
     return ""
@@ -704,7 +718,7 @@ proc ::fivax::dryrun::Lower {c r} {
     lassign $c x y z
     if {$z - $r >= $R(top)} return
     lassign [Cell $x $y] ci cj
-    foreach {di dj dz} [Stencil $r 1] {
+    foreach {di dj dz -} [Stencil $r 1] {
         set i [expr {$ci + $di}]
         set j [expr {$cj + $dj}]
         if {$i < 0 || $j < 0 || $i >= $R(nx) || $j >= $R(ny)} continue
@@ -720,11 +734,11 @@ proc ::fivax::dryrun::Cell {x y} {
 }
 
 # ::fivax::dryrun::Stencil --
-#	Returns {di dj dz ...}: the cells about a sphere's centre cell that a
-#	sphere of radius r covers (their centres within r of the centre
+#	Returns {di dj dz d ...}: the cells about a sphere's centre cell that
+#	a sphere of radius r covers (their centres within r of the centre
 #	cell's centre; grown 1: within r plus half a cell's diagonal, the
 #	cells it reaches into), each with the depth of the sphere's lower
-#	half below its centre there (0 beyond r).
+#	half below its centre there (0 beyond r) and the distance.
 proc ::fivax::dryrun::Stencil {r grown} {
     variable R
     if {[info exists R(stencil,$r,$grown)]} {return $R(stencil,$r,$grown)}
@@ -736,7 +750,7 @@ proc ::fivax::dryrun::Stencil {r grown} {
         for {set di -$n} {$di <= $n} {incr di} {
             set d2 [expr {($di * $c) ** 2 + ($dj * $c) ** 2}]
             if {$d2 > $reach * $reach && ($di || $dj)} continue
-            lappend out $di $dj [expr {sqrt(max(0.0, $r * $r - $d2))}]
+            lappend out $di $dj [expr {sqrt(max(0.0, $r * $r - $d2))}] [expr {sqrt($d2)}]
         }
     }
     set R(stencil,$r,$grown) $out

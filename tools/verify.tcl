@@ -36,7 +36,7 @@ namespace eval ::verifytool {
         {-mid-tol {maybe real min 0} {} MM "tip tolerance inside blocks (default: -tol)"}
         {-mid-atol {maybe real min 0} {} DEG "tool axis tolerance inside blocks (default: -atol)"}
         {-controller {maybe word} {} NAME "dialect of the NC text (default: the machine's controller)"}
-        {-tool-length {maybe real} {} MM "tool length (default: the CL's TLDATA, else the machine's tool_length)"}
+        {-tool-length {maybe real} {} MM "tool length (default: the CL's TLDATA, else the program's FIVAX TOOL comments, else the machine's tool_length)"}
         {-table-offset {maybe vec3} {} "X Y Z" "workpiece-frame position of the table reference point"}
         {-arc-tol {real gt 0} 0.002 MM "chord tolerance of CL arcs (the post's -arc-tol)"}
         {-window {int min 1} 32 N "CL segments searched ahead of the last match"}
@@ -150,6 +150,7 @@ proc ::verifytool::Line {line where n} {
     set blk [$S(checker) read $line]
     foreach c [dict get $blk comments] {
         if {[regexp {^\s*OPERATION\s+(.*?)\s*$} $c -> name]} {StartOp $name}
+        if {[regexp {^\s*FIVAX TOOL \d+ LENGTH ([0-9.]+)} $c -> len]} {ToolComment $len}
     }
     if {![dict get $blk block]} return
     dict incr S(op) blocks
@@ -217,6 +218,15 @@ proc ::verifytool::StartOp {name} {
         set S(clPoints) [dict get $clop points]
         if {$len eq ""} {set len [dict get $clop length]}
     }
+    $S(checker) setTool $len
+}
+
+# ::verifytool::ToolComment --
+#	The program's tool comment (FIVAX TOOL n LENGTH len): the tool length
+#	its X Y Z were computed with, unless -tool-length or -cl give one.
+proc ::verifytool::ToolComment {len} {
+    variable S
+    if {[dict get $S(opts) -tool-length] ne "" || [llength $S(cl)]} return
     $S(checker) setTool $len
 }
 
