@@ -20,19 +20,25 @@
 #	    end         blocks after M2/M30/END PGM; a program that never ends
 #	    unreadable  a word or block the Checker cannot interpret
 #
-#	The stock is a height map over the x-y of the workpiece frame: the
-#	-stock box or, by default, the box of the tips of the program's own
-#	cutting moves (feed moves that do not back out along the tool axis,
-#	and hole bottoms) grown sideways by the tool radius; its top is the
-#	highest such tip, its bottom the table unless the machine's table_top
-#	says otherwise. The map is lowered where the cutter passes at feed.
-#	Bodies are capsules along the tool axis from the tip: the cutter
+#	The stock is a height map over the x-y of the workpiece frame. With
+#	-stock it is that box, lowered where the cutter passes at feed, move
+#	by move. Without it the dry run knows only what the program cuts: the
+#	box of the tips of its cutting moves (feed moves that do not back out
+#	along the tool axis, and hole bottoms), and in it the part as the
+#	program leaves it: each cell lowered by every cut, the cells no cut
+#	reaches that are enclosed by cuts (a boss) at the highest cut near
+#	them (tool axis within 60 deg of +Z), those reached from the box's
+#	edge air. The table's top is the machine's table_top, else the
+#	stock's bottom (the cutter is held to it only when one of them is
+#	given).
+#
+#	Bodies are cylinders along the tool axis from the tip: the cutter
 #	(fluteRadii tool radii long, the tool's radius), the shank (up to the
-#	holder, the same radius), the holder and the spindle nose (the
-#	machine's holder and spindle_nose {diameter length}; the holder ends
-#	at the tool length, the nose starts there). A capsule is taken as
-#	discs across the map at samples along its axis, which is exact for
-#	a vertical tool and conservative by at most a radius when tilted.
+#	tool's own length, the same radius), the holder above it and the
+#	spindle nose above that (the machine's holder and spindle_nose
+#	{diameter length}). A body is taken as flat discs across the map at
+#	samples along its axis, their rims dipping by the tilt: exact for a
+#	vertical tool, conservative by at most a radius when tilted.
 #	Moves are sampled as the control moves: joint-space moves by forward
 #	kinematics of the linearly interpolated joints (a body swing is seen),
 #	TCP and work-plane moves straight in the workpiece frame, arcs at
@@ -379,8 +385,21 @@ proc ::fivax::dryrun::Geometry {} {
     }
     Grid [expr {min($x0, $x1)}] [expr {min($y0, $y1)}] [expr {max($x0, $x1)}] \
         [expr {max($y0, $y1)}] [expr {max($z0, $z1)}] $radius
-    if {[info exists tips]} {LocalTops $tips}
     set R(cutterToTable) $tableGiven
+    set R(silent) 0
+    if {$R(estimated)} {
+        # the part as the program leaves it: every cut first, then the
+        # uncut cells reached from the map's edge are air, those enclosed
+        # by cuts (a boss) the highest near cut's level
+        LocalTops $tips
+        set R(H0) $R(H)
+        set R(silent) 1
+        foreach move $R(moves) {
+            if {[lindex $move 0] in {cut hole}} {Move $move}
+        }
+        set R(silent) 0
+        Outside
+    }
     foreach move $R(moves) {
         set kind [lindex $move 0]
         if {$kind eq "switch"} {
@@ -394,6 +413,30 @@ proc ::fivax::dryrun::Geometry {} {
             continue
         }
         Move $move
+    }
+}
+
+# ::fivax::dryrun::Outside --
+#	Sets the cells of the height map that no cut lowered (still at their
+#	height in H0) and that are reached from the map's edge through such
+#	cells to air.
+proc ::fivax::dryrun::Outside {} {
+    variable R
+    variable air
+    set queue {}
+    for {set i 0} {$i < $R(nx)} {incr i} {lappend queue $i 0 $i [expr {$R(ny) - 1}]}
+    for {set j 0} {$j < $R(ny)} {incr j} {lappend queue 0 $j [expr {$R(nx) - 1}] $j}
+    while {[llength $queue]} {
+        set next {}
+        foreach {i j} $queue {
+            if {$i < 0 || $j < 0 || $i >= $R(nx) || $j >= $R(ny)} continue
+            set k [expr {$j * $R(nx) + $i}]
+            set h [lindex $R(H) $k]
+            if {$h == $air || $h != [lindex $R(H0) $k]} continue
+            lset R(H) $k $air
+            lappend next [expr {$i + 1}] $j [expr {$i - 1}] $j $i [expr {$j + 1}] $i [expr {$j - 1}]
+        }
+        set queue $next
     }
 }
 
@@ -580,29 +623,27 @@ proc ::fivax::dryrun::Samples {from to j0 j1 space model path len step} {
 }
 
 # ::fivax::dryrun::Follow --
-#	Follows the tool {length radius} of a move of kind (rapid, back: a
-#	rapid backing out along the tool axis, or cut) at line n through the
-#	poses; returns 1 when it raised an event (one per move).
+#	Follows the tool {length radius} of a move of kind (rapid; back: a
+#	rapid backing out along the tool axis; cut) at line n through the
+#	poses; returns 1 when it raised an event (one per move). While
+#	R(silent) a cut only lowers the stock.
 proc ::fivax::dryrun::Follow {kind n poses tool} {
     variable R
     variable eps
     lassign $tool len r
-    # (the default stock is known to about a tool radius at its edges: a
-    # profile's tips lie a radius outside the part, a facing pass runs
-    # over its edge)
-    set margin [expr {$R(estimated) ? max($eps, $r) : $eps}]
     foreach pose $poses {
         set bodies [Bodies $pose $len $r]
         if {$kind eq "cut"} {
-            # (the cutter's lowest sphere: the flutes above it follow it
-            # down, or cut only where it passed)
-            lassign [lindex $bodies 0] - a - rr
-            Lower $a $rr
+            # (the cutter's end: the flutes above it follow it down, or
+            # cut only where it passed)
+            lassign [lindex $bodies 0] - a b rr
+            Lower $a $b $rr
         }
+        if {$R(silent)} continue
         foreach body $bodies {
             lassign $body name a b rr
             if {$name ne "cutter" || $kind eq "rapid"} {
-                set z [Below $a $b $rr $margin [expr {$name ne "cutter"}]]
+                set z [Below $a $b $rr]
                 if {$z ne ""} {
                     lassign [lindex $pose 0] x y tz
                     Event $n [expr {$name eq "cutter" ? "rapid" : "collision"}] [::format \
@@ -625,9 +666,12 @@ proc ::fivax::dryrun::Follow {kind n poses tool} {
 }
 
 # ::fivax::dryrun::Bodies --
-#	Returns the capsules {name a b radius} of a tool of length len and
-#	radius r at pose {P t}: cutter, shank, and, when the tool length is
-#	known (longer than the cutter), holder and spindle nose.
+#	Returns the bodies {name a b radius} (from a up to b along the tool
+#	axis) of a tool of length len (its own length: tip to holder) and
+#	radius r at pose {P t}: cutter (fluteRadii radii long), and, when the
+#	length is known (longer than the cutter), the shank up to the length,
+#	the holder above it and the spindle nose above that (machine keys
+#	holder and spindle_nose).
 proc ::fivax::dryrun::Bodies {pose len r} {
     variable R
     variable fluteRadii
@@ -635,13 +679,12 @@ proc ::fivax::dryrun::Bodies {pose len r} {
     set flute [expr {max($fluteRadii * $r, $R(cell))}]
     lassign [dict get $R(machine) holder] hd hl
     lassign [dict get $R(machine) spindle_nose] nd nl
-    # (the capsules' spheres: the cutter's lowest one touches the tip)
-    set out [list [list cutter [Along $P $t $r] [Along $P $t $flute] $r]]
+    set out [list [list cutter $P [Along $P $t $flute] $r]]
     if {$len eq "" || $len <= $flute} {return $out}
-    set holder [expr {max($flute, $len - $hl)}]
-    if {$holder > $flute} {lappend out [list shank [Along $P $t $flute] [Along $P $t $holder] $r]}
-    if {$len > $holder} {lappend out [list holder [Along $P $t $holder] [Along $P $t $len] [expr {$hd / 2.0}]]}
-    if {$nl > 0} {lappend out [list "spindle nose" [Along $P $t $len] [Along $P $t [expr {$len + $nl}]] [expr {$nd / 2.0}]]}
+    set nose [expr {$len + $hl}]
+    lappend out [list shank [Along $P $t $flute] [Along $P $t $len] $r]
+    if {$hl > 0} {lappend out [list holder [Along $P $t $len] [Along $P $t $nose] [expr {$hd / 2.0}]]}
+    if {$nl > 0} {lappend out [list "spindle nose" [Along $P $t $nose] [Along $P $t [expr {$nose + $nl}]] [expr {$nd / 2.0}]]}
     return $out
 }
 
@@ -653,23 +696,27 @@ proc ::fivax::dryrun::Along {P t s} {
 }
 
 # ::fivax::dryrun::Discs --
-#	Returns the points x y z a cell apart along the segment a-b, the part
-#	where a sphere of radius r about them reaches below the stock's top.
-proc ::fivax::dryrun::Discs {a b r} {
+#	Returns the points x y z a cell apart along the segment a-b (a body's
+#	axis from its lower end), those below the stock's top; of a vertical
+#	axis only the lowest (the discs above it cover the same cells).
+proc ::fivax::dryrun::Discs {a b} {
     variable R
     lassign $a ax ay az
     lassign $b bx by bz
-    set top [expr {$R(top) + $r}]
+    set top $R(top)
     if {$az >= $top && $bz >= $top} {return {}}
-    # the part below: s in [s0, s1] of a + s (b - a)
+    set len [expr {sqrt(($bx - $ax) ** 2 + ($by - $ay) ** 2 + ($bz - $az) ** 2)}]
+    if {$len == 0 || abs($bz - $az) > 0.9995 * $len} {
+        return [expr {$az <= $bz ? [list $ax $ay $az] : [list $bx $by $bz]}]
+    }
+    # the part below the top: s in [s0, s1] of a + s (b - a)
     set s0 0.0
     set s1 1.0
     if {$az != $bz} {
         set sTop [expr {($top - $az) / ($bz - $az)}]
         if {$az >= $top} {set s0 $sTop} elseif {$bz >= $top} {set s1 $sTop}
     }
-    set len [expr {sqrt(($bx - $ax) ** 2 + ($by - $ay) ** 2 + ($bz - $az) ** 2) * ($s1 - $s0)}]
-    set count [expr {max(1, int(ceil($len / $R(cell))))}]
+    set count [expr {max(1, int(ceil($len * ($s1 - $s0) / $R(cell))))}]
     set out {}
     for {set i 0} {$i <= $count} {incr i} {
         set s [expr {$s0 + ($s1 - $s0) * $i / double($count)}]
@@ -679,51 +726,57 @@ proc ::fivax::dryrun::Discs {a b r} {
     return $out
 }
 
+# ::fivax::dryrun::Slope --
+#	Returns how far the rim of a disc across the axis a-b dips per unit
+#	of horizontal distance from its centre (0 for a vertical axis).
+proc ::fivax::dryrun::Slope {a b} {
+    set d [::fivax::vec::sub $b $a]
+    set n [::fivax::vec::norm $d]
+    set k [expr {$n > 0 ? abs([lindex $d 2]) / $n : 1.0}]
+    expr {$k > 0.1 ? sqrt(max(0.0, 1.0 - $k * $k)) / $k : 10.0}
+}
+
 # ::fivax::dryrun::Below --
-#	Returns {x y z h}: the first point of the capsule a-b of radius r
-#	that is below the stock's surface h there by more than margin, or
-#	"". The cutter (flat 0) is the spheres about its axis; the other
-#	bodies (flat 1) have flat ends: discs across the axis, whose rim
-#	dips by the tilt.
-proc ::fivax::dryrun::Below {a b r margin flat} {
+#	Returns {x y z h}: the first point of the body of radius r along the
+#	segment a-b (flat discs across its axis, their rims dipping by the
+#	tilt, at most r) that is below the stock's surface h there by more
+#	than eps, or "".
+proc ::fivax::dryrun::Below {a b r} {
     variable R
+    variable eps
+    set slope [Slope $a $b]
     set stencil [Stencil $r 0]
-    set slope 0.0
-    if {$flat} {
-        # the drop of the tilted disc per unit of horizontal distance
-        set d [::fivax::vec::sub $b $a]
-        set n [::fivax::vec::norm $d]
-        set k [expr {$n > 0 ? abs([lindex $d 2]) / $n : 1.0}]
-        set slope [expr {$k > 0.1 ? sqrt(max(0.0, 1.0 - $k * $k)) / $k : 10.0}]
-    }
-    foreach {x y z} [Discs $a $b [expr {$flat ? 0.0 : $r}]] {
+    foreach {x y z} [Discs $a $b] {
         lassign [Cell $x $y] ci cj
-        foreach {di dj dz dd} $stencil {
+        foreach {di dj d} $stencil {
             set i [expr {$ci + $di}]
             set j [expr {$cj + $dj}]
             if {$i < 0 || $j < 0 || $i >= $R(nx) || $j >= $R(ny)} continue
-            set h [lindex $R(H) [expr {$j * $R(nx) + $i}]]
-            set low [expr {$flat ? $z - min($r, $dd * $slope) : $z - $dz}]
-            if {$h > $low + $margin} {return [list $x $y $low $h]}
+            set k [expr {$j * $R(nx) + $i}]
+            set h [lindex $R(H) $k]
+            set low [expr {$z - min($r, $d * $slope)}]
+            if {$h > $low + $eps} {return [list $x $y $low $h]}
         }
     }
     return ""
 }
 
 # ::fivax::dryrun::Lower --
-#	Lowers the stock to the lower half of the cutter's sphere of radius r
-#	about c.
-proc ::fivax::dryrun::Lower {c r} {
+#	Lowers the stock to the cutter's end, the disc of radius r at a
+#	across the axis a-b.
+proc ::fivax::dryrun::Lower {a b r} {
     variable R
-    lassign $c x y z
+    lassign $a x y z
     if {$z - $r >= $R(top)} return
+    set slope [Slope $a $b]
     lassign [Cell $x $y] ci cj
-    foreach {di dj dz -} [Stencil $r 1] {
+    foreach {di dj d} [Stencil $r 1] {
         set i [expr {$ci + $di}]
         set j [expr {$cj + $dj}]
         if {$i < 0 || $j < 0 || $i >= $R(nx) || $j >= $R(ny)} continue
         set k [expr {$j * $R(nx) + $i}]
-        if {[lindex $R(H) $k] > $z - $dz} {lset R(H) $k [expr {$z - $dz}]}
+        set low [expr {$z - min($r, $d * $slope)}]
+        if {[lindex $R(H) $k] > $low} {lset R(H) $k $low}
     }
 }
 
@@ -734,11 +787,10 @@ proc ::fivax::dryrun::Cell {x y} {
 }
 
 # ::fivax::dryrun::Stencil --
-#	Returns {di dj dz d ...}: the cells about a sphere's centre cell that
-#	a sphere of radius r covers (their centres within r of the centre
-#	cell's centre; grown 1: within r plus half a cell's diagonal, the
-#	cells it reaches into), each with the depth of the sphere's lower
-#	half below its centre there (0 beyond r) and the distance.
+#	Returns {di dj d ...}: the cells about a disc's centre cell that a
+#	disc of radius r covers (their centres within r of the centre cell's
+#	centre; grown 1: within r plus half a cell's diagonal, the cells it
+#	reaches into) and their distance from it.
 proc ::fivax::dryrun::Stencil {r grown} {
     variable R
     if {[info exists R(stencil,$r,$grown)]} {return $R(stencil,$r,$grown)}
@@ -750,7 +802,7 @@ proc ::fivax::dryrun::Stencil {r grown} {
         for {set di -$n} {$di <= $n} {incr di} {
             set d2 [expr {($di * $c) ** 2 + ($dj * $c) ** 2}]
             if {$d2 > $reach * $reach && ($di || $dj)} continue
-            lappend out $di $dj [expr {sqrt(max(0.0, $r * $r - $d2))}] [expr {sqrt($d2)}]
+            lappend out $di $dj [expr {sqrt($d2)}]
         }
     }
     set R(stencil,$r,$grown) $out

@@ -12,6 +12,8 @@ namespace eval ::fivax::settings {
         {-arc-tol {real gt 0} 0.002 MM "chord tolerance of arcs written as points"}
         {-log text {} FILE
             "file for warnings, retracts and errors (default: <output>.log beside the NC file when the host names it)"}
+        {-dryrun {enum on off} off WHEN
+            "machine dry run of the written program at its end (lib/dryrun.tcl): any event ends posting with an error"}
     }
 }
 
