@@ -63,6 +63,12 @@ proc boundsMatch {want got} {
 }
 customMatch le boundsMatch
 
+# tools/verify.tcl's machine dry run (-dryrun) in the suite's read-backs
+# (runReplay, dialects.test): off while the post's own programs still
+# have the events issue 23 fixes (no spindle start, G43.4 without Z...);
+# tests/dryrun.test runs it. On once those fixes are merged.
+set ::verifyDryRun off
+
 # corpusFile -- Returns the path of the named real CL file.
 proc corpusFile {name} {
     file join $::clCorpus $name
@@ -298,7 +304,7 @@ proc verifyReplayOutput {argList} {
     if {![dict exists $opts -o] || ![file isfile [dict get $opts -o]] || $cl eq "-"} {
         return {0 {}}
     }
-    set vargs [list -quiet -machine [dict get $opts -machine] -cl $cl]
+    set vargs [list -quiet -dryrun $::verifyDryRun -machine [dict get $opts -machine] -cl $cl]
     if {[dict exists $opts -msys]} {lappend vargs -msys}
     foreach key {-table-offset -controller -arc-tol} {
         if {[dict exists $opts $key]} {lappend vargs $key [dict get $opts $key]}
