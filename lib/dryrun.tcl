@@ -387,6 +387,7 @@ proc ::fivax::dryrun::Geometry {} {
         [expr {max($y0, $y1)}] [expr {max($z0, $z1)}] $radius
     set R(cutterToTable) $tableGiven
     set R(silent) 0
+    set R(final) 0
     if {$R(estimated)} {
         # the part as the program leaves it: every cut first, then the
         # uncut cells reached from the map's edge are air, those enclosed
@@ -398,6 +399,7 @@ proc ::fivax::dryrun::Geometry {} {
             if {[lindex $move 0] in {cut hole}} {Move $move}
         }
         set R(silent) 0
+        set R(final) 1
         Outside
     }
     foreach move $R(moves) {
@@ -626,14 +628,15 @@ proc ::fivax::dryrun::Samples {from to j0 j1 space model path len step} {
 #	Follows the tool {length radius} of a move of kind (rapid; back: a
 #	rapid backing out along the tool axis; cut) at line n through the
 #	poses; returns 1 when it raised an event (one per move). While
-#	R(silent) a cut only lowers the stock.
+#	R(silent) a cut only lowers the stock; once R(final) (the map is the
+#	finished part) it does not.
 proc ::fivax::dryrun::Follow {kind n poses tool} {
     variable R
     variable eps
     lassign $tool len r
     foreach pose $poses {
         set bodies [Bodies $pose $len $r]
-        if {$kind eq "cut"} {
+        if {$kind eq "cut" && !$R(final)} {
             # (the cutter's end: the flutes above it follow it down, or
             # cut only where it passed)
             lassign [lindex $bodies 0] - a b rr
@@ -745,10 +748,10 @@ proc ::fivax::dryrun::Below {a b r} {
     variable R
     variable eps
     set slope [Slope $a $b]
-    set stencil [Stencil $r 0]
+    set stencil [lrange [Stencil $r 0] 1 end]
     foreach {x y z} [Discs $a $b] {
         lassign [Cell $x $y] ci cj
-        foreach {di dj d} $stencil {
+        foreach {di dj d -} $stencil {
             set i [expr {$ci + $di}]
             set j [expr {$cj + $dj}]
             if {$i < 0 || $j < 0 || $i >= $R(nx) || $j >= $R(ny)} continue
@@ -770,7 +773,19 @@ proc ::fivax::dryrun::Lower {a b r} {
     if {$z - $r >= $R(top)} return
     set slope [Slope $a $b]
     lassign [Cell $x $y] ci cj
-    foreach {di dj d} [Stencil $r 1] {
+    set stencil [Stencil $r 1]
+    set n [lindex $stencil 0]
+    set k0 [expr {$cj * $R(nx) + $ci}]
+    if {$ci >= $n && $cj >= $n && $ci + $n < $R(nx) && $cj + $n < $R(ny)} {
+        # (inside the map: no cell to skip)
+        foreach {- - d off} [lrange $stencil 1 end] {
+            set k [expr {$k0 + $off}]
+            set low [expr {$z - min($r, $d * $slope)}]
+            if {[lindex $R(H) $k] > $low} {lset R(H) $k $low}
+        }
+        return
+    }
+    foreach {di dj d -} [lrange $stencil 1 end] {
         set i [expr {$ci + $di}]
         set j [expr {$cj + $dj}]
         if {$i < 0 || $j < 0 || $i >= $R(nx) || $j >= $R(ny)} continue
@@ -787,22 +802,23 @@ proc ::fivax::dryrun::Cell {x y} {
 }
 
 # ::fivax::dryrun::Stencil --
-#	Returns {di dj d ...}: the cells about a disc's centre cell that a
-#	disc of radius r covers (their centres within r of the centre cell's
-#	centre; grown 1: within r plus half a cell's diagonal, the cells it
-#	reaches into) and their distance from it.
+#	Returns {n di dj d off ...}: the cells about a disc's centre cell
+#	that a disc of radius r covers (their centres within r of the centre
+#	cell's centre; grown 1: within r plus half a cell's diagonal, the
+#	cells it reaches into), their distance from it and their offset in
+#	the map's list, all within n cells of it.
 proc ::fivax::dryrun::Stencil {r grown} {
     variable R
     if {[info exists R(stencil,$r,$grown)]} {return $R(stencil,$r,$grown)}
     set c $R(cell)
     set reach [expr {$grown ? $r + 0.71 * $c : $r}]
     set n [expr {int(ceil($reach / $c))}]
-    set out {}
+    set out [list $n]
     for {set dj -$n} {$dj <= $n} {incr dj} {
         for {set di -$n} {$di <= $n} {incr di} {
             set d2 [expr {($di * $c) ** 2 + ($dj * $c) ** 2}]
             if {$d2 > $reach * $reach && ($di || $dj)} continue
-            lappend out $di $dj [expr {sqrt($d2)}]
+            lappend out $di $dj [expr {sqrt($d2)}] [expr {$dj * $R(nx) + $di}]
         }
     }
     set R(stencil,$r,$grown) $out
