@@ -222,6 +222,9 @@ proc ::fivax::dryrun::ReadLine {checker line n} {
         }
     }
     set pose [dict get $blk pose]
+    if {$pose eq "" && $space eq "plane" && "Z" ni $moved && ("X" in $moved || "Y" in $moved)} {
+        AcrossPlane $checker $n
+    }
     if {$pose ne ""} {
         # (from an unknown position: the end only)
         set from [expr {$R(pose) eq "" ? $pose : $R(pose)}]
@@ -236,6 +239,20 @@ proc ::fivax::dryrun::ReadLine {checker line n} {
     }
     set R(pose) $pose
     set R(joints) [dict get $blk joints]
+}
+
+# ::fivax::dryrun::AcrossPlane --
+#	A move across a tilted work plane at line n before its Z is known: on
+#	a machine that tilts its head the plane's X Y are not level, so the
+#	head goes down (or sideways) by an unknown amount; the approach must
+#	reach the plane's Z along the tool axis first.
+proc ::fivax::dryrun::AcrossPlane {checker n} {
+    variable R
+    if {[dict get $R(machine) kind] eq "tabletable"} return
+    set axis [$checker planeAxis]
+    if {$axis eq "" || [lindex $axis 2] > 0.99985} return
+    Event $n rapid "move across the tilted work plane (tool axis [::format {%.3f %.3f %.3f} {*}$axis])\
+        before its Z is known: the head moves down by an unknown amount (approach along the tool axis first)"
 }
 
 # ::fivax::dryrun::ArcPoses --

@@ -624,6 +624,13 @@ oo::class create ::fivax::verify::Checker {
         list [concat [::fivax::kin::position $S(model) $xyz $q] $q] [list $xyz $t] tcp
     }
 
+    # Returns the tool axis of the work plane in effect (its Z in the
+    # workpiece frame), or "" outside a work plane.
+    method planeAxis {} {
+        if {$S(frame) eq ""} {return ""}
+        lmap row [lindex $S(frame) 0] {lindex $row 2}
+    }
+
     # Returns {P t}: tool tip and axis (workpiece frame) at joints.
     method tip {joints} {
         ::fivax::kin::forward $S(model) $joints
