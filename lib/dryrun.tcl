@@ -594,12 +594,14 @@ proc ::fivax::dryrun::Backing {from to} {
 
 # ::fivax::dryrun::Step --
 #	Returns {len step}: the tool's length and the sampling step of a move
-#	of kind (rapid: a cell; cut: half the tool radius, at least a cell,
-#	which still lowers every cell the cutter's sweep reaches into).
+#	of kind (rapid, back: a cell; cut: up to the tool radius).
 proc ::fivax::dryrun::Step {kind tool} {
     variable R
     lassign $tool len r
-    list $len [expr {$kind eq "cut" ? max($R(cell), $r / 2.0) : $R(cell)}]
+    set c $R(cell)
+    # (a cut's samples this far apart still lower every cell its sweep
+    # reaches into: Lower's discs reach half a cell's diagonal further)
+    list $len [expr {$kind eq "cut" ? max($c, min($r, 2.0 * sqrt(1.42 * $c * $r))) : $c}]
 }
 
 # ::fivax::dryrun::Samples --
@@ -651,6 +653,8 @@ proc ::fivax::dryrun::Follow {kind n poses tool} {
     variable R
     variable eps
     lassign $tool len r
+    set last [lindex $poses end]
+    set seen ""
     foreach pose $poses {
         set bodies [Bodies $pose $len $r]
         if {$kind eq "cut" && !$R(final)} {
@@ -660,6 +664,12 @@ proc ::fivax::dryrun::Follow {kind n poses tool} {
             Lower $a $b $rr
         }
         if {$R(silent)} continue
+        if {$kind eq "cut"} {
+            # a cut's other bodies: every tool diameter and at its end
+            if {$pose ne $last && $seen ne ""
+                    && [::fivax::vec::dist [lindex $pose 0] $seen] < 2.0 * $r} continue
+            set seen [lindex $pose 0]
+        }
         foreach body $bodies {
             lassign $body name a b rr
             if {$name ne "cutter" || $kind eq "rapid"} {
