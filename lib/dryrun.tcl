@@ -14,7 +14,8 @@
 #	                body below the table's top
 #	    lengthcomp  G43 / G43.4 with H in a block with no move along Z
 #	    mode        TCP or a work plane switched with the tool at cutting
-#	                depth (tip in the stock's box, below its top)
+#	                depth (tip below the stock's top, less than depthClear
+#	                above its surface)
 #	    toollength  the program's tool length (its FIVAX TOOL comment)
 #	                differs from the tool table's
 #	    end         blocks after M2/M30/END PGM; a program that never ends
@@ -76,6 +77,9 @@ namespace eval ::fivax::dryrun {
     # between two samples of a joint-space move.
     variable maxSamples 2000
     variable rotaryStep 0.0175
+    # The tip is at cutting depth (for switching TCP or a work plane)
+    # below the stock's top and less than this (mm) above its surface.
+    variable depthClear 1.0
     # Two tool lengths differ when they differ by more than this (mm).
     variable lengthTol 0.0005
     # R: the state of one run (see run).
@@ -385,6 +389,8 @@ proc ::fivax::dryrun::ToolComment {checker text n} {
 #	and mode events).
 proc ::fivax::dryrun::Geometry {} {
     variable R
+    variable eps
+    variable depthClear
     set box [dict get $R(opts) -stock]
     set tableGiven [expr {[dict get $R(machine) table_top] ne "" || $box ne ""}]
     set R(estimated) [expr {$box eq ""}]
@@ -424,15 +430,27 @@ proc ::fivax::dryrun::Geometry {} {
         if {$kind eq "switch"} {
             lassign $move - n pose what
             lassign [lindex $pose 0] x y z
-            if {$x >= $R(gx0) && $x <= $R(gx1) && $y >= $R(gy0) && $y <= $R(gy1)
-                    && $z < $R(top) - $::fivax::dryrun::eps} {
-                Event $n mode [::format "%s switched with the tip at Z%.3f, below the stock's top Z%.3f" \
-                    $what $z $R(top)]
+            set h [Surface $x $y]
+            if {$h ne "" && $z < $R(top) - $eps && $z < $h + $depthClear} {
+                Event $n mode [::format "%s switched with the tip at cutting depth: Z%.3f, the stock's\
+                    surface there Z%.3f, its top Z%.3f" $what $z $h $R(top)]
             }
             continue
         }
         Move $move
     }
+}
+
+# ::fivax::dryrun::Surface --
+#	Returns the height of the stock's surface at x y (its map cell), ""
+#	outside the map or where there is no stock.
+proc ::fivax::dryrun::Surface {x y} {
+    variable R
+    variable air
+    lassign [Cell $x $y] i j
+    if {$i < 0 || $j < 0 || $i >= $R(nx) || $j >= $R(ny)} {return ""}
+    set h [lindex $R(H) [expr {$j * $R(nx) + $i}]]
+    expr {$h == $air ? "" : $h}
 }
 
 # ::fivax::dryrun::Outside --
