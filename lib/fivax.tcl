@@ -9,7 +9,7 @@
 #	    machine kin        machine files, kinematics
 #	    curve plane motion/  CL path geometry, work-plane frames, the planner
 #	    nc output          blocks, the dialect output layer
-#	    verify             checking written blocks
+#	    verify dryrun      checking written blocks, the machine dry run
 #	    settings           the option table of a posting job
 
 package require Tcl 8.6
@@ -32,7 +32,7 @@ foreach ::fivax::File {
     curve.tcl plane.tcl motion/plan.tcl motion/candidates.tcl motion/moves.tcl
     motion/linearise.tcl motion/feeds.tcl motion/holes.tcl motion/frames.tcl
     nc.tcl output.tcl
-    verify.tcl
+    verify.tcl dryrun.tcl
     settings.tcl
 } {
     source [file join $::fivax::home $::fivax::File]

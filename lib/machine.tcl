@@ -32,7 +32,7 @@ namespace eval ::fivax::machine {
         clearance 50 safe_z {} feed_min 1 feed_max 20000
         inverse_time_max 9999 max_swing 180 work_offset 54 tool_change_z 0
         home_rotaries 0 entry_feed {} tcp 0 tcp_codes {} swivel_record TC1
-        travel {} default_rpm {}
+        travel {} default_rpm {} holder {40 40} spindle_nose {80 60} table_top {}
     }
     variable topRequired {name axes}
     variable axisKeys {side direction point sense min max continuous prefer rollover offset}
@@ -205,6 +205,12 @@ proc ::fivax::machine::parse {text sourceName} {
     set axes [ParseAxes $src $family [dict get $raw axes] $alpha $yH]
     dict set m axes $axes
     dict set m travel [Travel $src [Get $raw travel]]
+    foreach key {holder spindle_nose} {
+        dict set m $key [Body $src $key [Get $raw $key]]
+    }
+    set v [Get $raw table_top]
+    if {$v ne ""} {set v [Length $src table_top $v]}
+    dict set m table_top $v
     set heads [lmap a $axes {if {[dict get $a side] eq "head"} {set a} else continue}]
     set tables [lmap a $axes {if {[dict get $a side] eq "table"} {set a} else continue}]
     dict set m kind [dict get {
@@ -291,6 +297,21 @@ proc ::fivax::machine::Vector {src key value {what ""}} {
         ::fivax::Fail MACHINE VALUE "$src: ${what}'$key' is not a list of 3 numbers: $value"
     }
     lmap c $value {Length $src $key $c $what}
+}
+
+# ::fivax::machine::Body --
+#	Returns the {diameter length} of a body along the tool axis (key
+#	holder or spindle_nose: the dry run's collision capsules), each a
+#	length >= 0, or fails naming key.
+proc ::fivax::machine::Body {src key value} {
+    if {![string is list $value] || [llength $value] != 2} {
+        ::fivax::Fail MACHINE VALUE "$src: '$key' is not a list {diameter length}: $value"
+    }
+    lmap c $value what {diameter length} {
+        set v [Length $src $key $c "$what of "]
+        if {$v < 0} {::fivax::Fail MACHINE VALUE "$src: $what of '$key' is negative: $c"}
+        set v
+    }
 }
 
 # ::fivax::machine::Travel --

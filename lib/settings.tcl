@@ -14,6 +14,8 @@ namespace eval ::fivax::settings {
             "tool length (gauge length) of the tools the CL gives none (no TLDATA); a CL length wins. Required in joint mode on a head machine"}
         {-log text {} FILE
             "file for warnings, retracts and errors (default: <output>.log beside the NC file when the host names it)"}
+        {-dryrun {enum on off} on WHEN
+            "machine dry run of the written program at its end (lib/dryrun.tcl): any event ends posting with an error"}
     }
 }
 

@@ -226,11 +226,16 @@ oo::class create ::fivax::verify::Checker {
     #   hole     1 when the block drills a hole of a canned cycle: joints
     #            are then at the hole's bottom, and the modal Z afterwards
     #            is the level the cycle returns to
+    #   end      1 when the line ends the program (M2, M30, Klartext END PGM)
     method read {line} {
         lassign [my Read $line 1] joints pose space limit arc hole block moved F pairs comments unknown
+        set end [expr {$S(syntax) eq "klartext" && [regexp {^\s*(\d+\s+)?END PGM\M} $line]}]
+        foreach {letter value} $pairs {
+            if {$letter eq "M" && ($value == 2 || $value == 30)} {set end 1}
+        }
         dict create block $block motion $S(motion) moved $moved joints $joints pose $pose \
             space $space arc $arc mode $S(mode) F $F feed $S(F) words $pairs \
-            comments $comments limit $limit unknown $unknown hole $hole
+            comments $comments limit $limit unknown $unknown hole $hole end $end
     }
 
     # Reads one NC line as read does (see there) and returns the values of
@@ -465,11 +470,12 @@ oo::class create ::fivax::verify::Checker {
     }
 
     # Returns the Klartext line as the ISO words the reader follows: L
-    # (FMAX: G0, F: G1, M91: G53, R0 left out), C with DR-/DR+ (G2/G3,
+    # (FMAX: G0, else G1, M91: G53, R0 left out), C with DR-/DR+ (G2/G3,
     # the centre from the last CC as I J), TOOL CALL (T, S), FUNCTION
-    # TCPM (G43.4) and FUNCTION RESET TCPM (G49), STOP (M0); CC, PLANE
-    # SPATIAL and PLANE RESET set the state and give no block; BEGIN and
-    # END PGM and cycle 9 are no blocks; a comment "; text" stays one.
+    # TCPM (G43.4) and FUNCTION RESET TCPM (G49), STOP (M0), BEGIN PGM's
+    # units (G21 MM, G20 INCH); CC, PLANE SPATIAL and PLANE RESET set the
+    # state and give no block; END PGM and cycle 9 are no blocks (read
+    # tells the program's end); a comment "; text" stays one.
     method Klartext {line} {
         if {[regexp {^\d+ L(?: \S+)*$} $line]} {
             # numbered, single spaces (every L line fivax writes): the
@@ -483,7 +489,9 @@ oo::class create ::fivax::verify::Checker {
             }
         }
         if {[info exists tokens]} {
-            set iso {}
+            # (an L line is a straight move: FMAX makes it rapid for this
+            # block only, else it feeds at the modal F)
+            set iso [expr {"FMAX" in $tokens ? {} : {G1}}]
             foreach tok $tokens {
                 if {$tok eq "FMAX"} {
                     set iso [linsert $iso 0 G0]
@@ -491,7 +499,6 @@ oo::class create ::fivax::verify::Checker {
                 } elseif {$tok eq "M91"} {
                     set iso [linsert $iso 0 G0 G53]
                 } elseif {[string match F* $tok] && [regexp {^F[0-9.]+$} $tok]} {
-                    set iso [linsert $iso 0 G1]
                     lappend iso $tok
                 } else {
                     lappend iso $tok
@@ -500,6 +507,9 @@ oo::class create ::fivax::verify::Checker {
             return [join $iso]
         }
         set pl {[-+]?[0-9.]+}
+        if {[regexp {^BEGIN PGM\s+\S+\s+(MM|INCH)\s*$} $body -> units]} {
+            return [dict get {MM G21 INCH G20} $units]
+        }
         if {[regexp {^;} $body] || [regexp {^(BEGIN|END) PGM\M} $body]
                 || [regexp {^CYCL DEF 9\.} $body]} {
             return [expr {[string index $body 0] eq ";" ? $body : ""}]
@@ -612,6 +622,13 @@ oo::class create ::fivax::verify::Checker {
         set q [lrange $joints 3 4]
         set t [lindex [::fivax::kin::forward $S(model) [list 0.0 0.0 0.0 {*}$q]] 1]
         list [concat [::fivax::kin::position $S(model) $xyz $q] $q] [list $xyz $t] tcp
+    }
+
+    # Returns the tool axis of the work plane in effect (its Z in the
+    # workpiece frame), or "" outside a work plane.
+    method planeAxis {} {
+        if {$S(frame) eq ""} {return ""}
+        lmap row [lindex $S(frame) 0] {lindex $row 2}
     }
 
     # Returns {P t}: tool tip and axis (workpiece frame) at joints.

@@ -72,11 +72,33 @@ proc fivax_where {} {
     return "event [MOM_ask_event_type]"
 }
 
-# fivax_out -- Writes NC lines (empty ones are skipped).
+# fivax_out --
+#	Writes NC lines (empty ones are skipped), kept for the dry run at the
+#	end of the program when the setting -dryrun is on.
 proc fivax_out {lines} {
+    global fivax
     foreach line $lines {
-        if {$line ne ""} {MOM_output_text $line}
+        if {$line eq ""} continue
+        MOM_output_text $line
+        if {$fivax(dryrun)} {lappend fivax(lines) $line}
     }
+}
+
+# fivax_dryrun --
+#	Runs the machine dry run (fivax::dryrun) on the lines written; its
+#	events end posting with an error listing them (the first 20).
+proc fivax_dryrun {} {
+    global fivax
+    if {!$fivax(dryrun)} return
+    set events [fivax::dryrun run $fivax(machine) $fivax(lines) \
+        -controller [dict get [$fivax(out) capabilities] controller] \
+        -table-offset [dict get $fivax(settings) -table-offset]]
+    set fivax(lines) {}
+    if {![llength $events]} return
+    set shown [fivax::dryrun format [lrange $events 0 19] [fivax_program_name]]
+    if {[llength $events] > 20} {lappend shown "... [expr {[llength $events] - 20}] more"}
+    fivax::Fail DRYRUN EVENTS "the dry run of the written program found [llength $events]\
+        events:\n[join $shown \n]"
 }
 
 # fivax_log --
@@ -138,6 +160,8 @@ fivax_handler fivax_setup {
     set fivax(machine) [fivax::machine load [dict get $settings -machine]]
     set fivax(log) {}
     set fivax(warnings) 0
+    set fivax(dryrun) [expr {[dict get $settings -dryrun] eq "on"}]
+    set fivax(lines) {}
     set mom_kin_machine_type 3_axis_mill
     set mom_kin_output_unit [expr {[dict get $fivax(machine) units] eq "inch" ? "IN" : "MM"}]
     set mom_kin_arc_output_mode FULL_CIRCLE
@@ -825,6 +849,7 @@ fivax_handler MOM_end_of_program {
     global fivax fivax_summary
     fivax_emit [$fivax(plan) finish]
     fivax_out [$fivax(out) end]
+    fivax_dryrun
     set fivax_summary [dict merge [$fivax(plan) stats] [$fivax(verify) summary] \
         [dict create toolChanges $fivax(toolChanges) postWarnings $fivax(warnings)]]
     MOM_output_to_listing_device "fivax summary: $fivax_summary"

@@ -63,6 +63,7 @@ proc boundsMatch {want got} {
 }
 customMatch le boundsMatch
 
+
 # corpusFile -- Returns the path of the named real CL file.
 proc corpusFile {name} {
     file join $::clCorpus $name

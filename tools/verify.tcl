@@ -13,9 +13,11 @@
 #	rapids after cutting and (with -cl) limit retracts, as the post
 #	counts them, rotary values outside the limits, feed anomalies and
 #	canned-cycle holes not drilled along the tool axis, and names the
-#	worst NC line. Exits 1 when a figure exceeds the tolerances, a value
-#	is outside the limits, a feed is wrong or a hole is drilled off the
-#	tool axis.
+#	worst NC line; then a machine dry run (lib/dryrun.tcl, -dryrun on by
+#	default) prints its events, one line "FILE:LINE: kind: what" each.
+#	Exits 1 when a figure exceeds the tolerances, a value is outside the
+#	limits, a feed is wrong, a hole is drilled off the tool axis, a word
+#	or block is not understood or the dry run has an event.
 #
 #	tclsh tools/verify.tcl -machine M.tcl ?options? part.nc   (-help)
 
@@ -40,10 +42,14 @@ namespace eval ::verifytool {
         {-mid-tol {maybe real min 0} {} MM "tip tolerance inside blocks (default: -tol)"}
         {-mid-atol {maybe real min 0} {} DEG "tool axis tolerance inside blocks (default: -atol)"}
         {-controller {maybe word} {} NAME "dialect of the NC text (default: the machine's controller)"}
-        {-tool-length {maybe real} {} MM "tool length (default: the CL's TLDATA, else the machine's tool_length)"}
+        {-tool-length {maybe real} {} MM "tool length (default: the CL's TLDATA, else the program's FIVAX TOOL comments, else the machine's tool_length)"}
         {-table-offset {maybe vec3} {} "X Y Z" "workpiece-frame position of the table reference point"}
         {-arc-tol {real gt 0} 0.002 MM "chord tolerance of CL arcs (the post's -arc-tol)"}
         {-window {int min 1} 32 N "CL segments searched ahead of the last match"}
+        {-dryrun {enum on off} on WHEN "machine dry run: spindle, rapids and bodies through the stock, length compensation, modes, tool lengths, program end"}
+        {-stock {maybe reals 6} {} "X0 Y0 Z0 X1 Y1 Z1"
+            "the dry run's stock box in the workpiece frame (default: the box of the program's cutting moves' tips grown by the tool radius)"}
+        {-tools text {} FILE "tool table for the dry run: lines \"T<n> LENGTH <L> ?RADIUS <R>?\" (# comments)"}
         {-csv text {} FILE "write one row per block: line, op, motion, axes, back-plotted tip and axis, deviations"}
         {-o text {} FILE "write the back-plotted tip path and tool axis as a CLSF"}
         {-svg text {} PREFIX "write PREFIX-axes.svg, PREFIX-deviation.svg and PREFIX-path.svg"}
@@ -93,7 +99,7 @@ proc ::verifytool::Max {opVar key value where} {
 proc ::verifytool::Run {opts path machine} {
     variable S
     array unset S
-    array set S [list opts $opts path $path machine $machine ops {} op [NewOp program] \
+    array set S [list opts $opts path $path machine $machine ops {} op [NewOp program] lines {} \
         opIndex -1 clPoints {} cursor 0 prev {} cutU "" breakU "" rows {} warnings {} \
         names [lmap a [dict get $machine chain] {dict get $a name}] \
         rollover [lmap a [dict get $machine chain] {dict get $a rollover}] cl {}]
@@ -109,6 +115,7 @@ proc ::verifytool::Run {opts path machine} {
     try {
         while {[gets $chan line] >= 0} {
             incr lineNo
+            lappend S(lines) $line
             Line $line $path:$lineNo $lineNo
         }
     } finally {
@@ -120,7 +127,28 @@ proc ::verifytool::Run {opts path machine} {
     if {[llength $S(cl)] && [llength $S(cl)] != $S(opIndex) + 1} {
         puts stderr "verify: warning: [llength $S(cl)] CL operations, [expr {$S(opIndex) + 1}] in the NC file"
     }
-    list $S(ops) $S(rows) [Problems] $S(warnings) $S(names)
+    list $S(ops) $S(rows) [Problems] $S(warnings) $S(names) $S(lines)
+}
+
+# ::verifytool::DryRun --
+#	Returns the dry run's events of the NC lines on machine as lines
+#	"FILE:LINE: kind: what" (none with -dryrun off).
+proc ::verifytool::DryRun {opts path machine lines} {
+    if {[dict get $opts -dryrun] eq "off"} {return {}}
+    set tools {}
+    if {[dict get $opts -tools] ne ""} {
+        set file [dict get $opts -tools]
+        set chan [open $file r]
+        try {
+            set tools [::fivax::dryrun tools [read $chan] $file]
+        } finally {
+            close $chan
+        }
+    }
+    set args [list -tools $tools -controller [dict get $opts -controller] \
+        -table-offset [dict get $opts -table-offset] -tool-length [dict get $opts -tool-length] \
+        -stock [dict get $opts -stock]]
+    ::fivax::dryrun format [::fivax::dryrun run $machine $lines {*}$args] $path
 }
 
 # ::verifytool::Line -- Checks one NC line (at where, line number n).
@@ -129,12 +157,13 @@ proc ::verifytool::Line {line where n} {
     set blk [$S(checker) read $line]
     foreach c [dict get $blk comments] {
         if {[regexp {^\s*OPERATION\s+(.*?)\s*$} $c -> name]} {StartOp $name}
+        if {[regexp {^\s*FIVAX TOOL \d+ LENGTH ([0-9.]+)} $c -> len]} {ToolComment $len}
     }
     if {![dict get $blk block]} return
     dict incr S(op) blocks
     foreach {kind word} [dict get $blk unknown] {
         if {![dict exists $S(warnings) $kind]} {
-            puts stderr "verify: $where: warning: $kind not understood ($word); read as if absent"
+            puts stderr "verify: $where: $kind not understood ($word)"
         }
         dict incr S(warnings) $kind
     }
@@ -205,6 +234,15 @@ proc ::verifytool::StartOp {name} {
         set S(clPoints) [dict get $clop points]
         if {$len eq ""} {set len [dict get $clop length]}
     }
+    $S(checker) setTool $len
+}
+
+# ::verifytool::ToolComment --
+#	The program's tool comment (FIVAX TOOL n LENGTH len): the tool length
+#	its X Y Z were computed with, unless -tool-length or -cl give one.
+proc ::verifytool::ToolComment {len} {
+    variable S
+    if {[dict get $S(opts) -tool-length] ne "" || [llength $S(cl)]} return
     $S(checker) setTool $len
 }
 
@@ -668,7 +706,8 @@ proc ::verifytool::main {argv} {
             ::fivax::nctool die "verify: bad -controller \"[dict get $opts -controller]\": must be one of\
                 [join [::fivax::verify dialects] {, }]"
         }
-        lassign [Run $opts $path $machine] ops rows problems warnings names
+        lassign [Run $opts $path $machine] ops rows problems warnings names lines
+        set events [DryRun $opts $path $machine $lines]
     } trap {FIVAX} {msg} {
         ::fivax::nctool die "verify: $msg"
     } trap {POSIX} {msg} {
@@ -677,7 +716,11 @@ proc ::verifytool::main {argv} {
     Say $opts "verify: [file tail $path] on [dict get $machine name] ([dict get $opts -machine])"
     Report $opts $ops $names [expr {[dict get $opts -cl] ne ""}]
     dict for {kind n} $warnings {
-        Say $opts "verify: warning: $n words of kind '$kind' not understood"
+        lappend problems "$n words of kind '$kind' not understood (a program it cannot read is not verified)"
+    }
+    foreach event $events {puts $event}
+    if {[llength $events]} {
+        lappend problems "[llength $events] dry-run events (machine state, stock, bodies: listed above)"
     }
     set tool [expr {[dict get $opts -tool-length] ne "" ? [dict get $opts -tool-length] :
         [dict get $machine tool_length]}]
