@@ -238,11 +238,34 @@ proc ::fivax::dryrun::ReadLine {checker line n} {
         if {[dict get $blk arc] ne ""} {
             set path [ArcPoses $checker [dict get $blk arc] [dict get $blk words] $pose]
         }
+        if {$hole} {
+            # (path: the poses at the R plane and at the return level)
+            set path [HoleLevels $pose [$checker cycleLevels]]
+        }
         lappend R(moves) [list $kind $n $from $pose $j0 [dict get $blk joints] \
             $space $R(model) [list $R(length) $R(radius)] $path]
+        if {$hole} {
+            # the tool ends at the return level above the hole
+            set R(pose) [lindex $path 1]
+            set R(joints) ""
+            return
+        }
     }
     set R(pose) $pose
     set R(joints) [dict get $blk joints]
+}
+
+# ::fivax::dryrun::HoleLevels --
+#	Returns the poses {R return} of a canned-cycle hole whose bottom is at
+#	pose {P t}, levels {R bottom return} (Z values of the block's space,
+#	along the tool axis when the hole is drilled along it: verify's
+#	drillOff checks that).
+proc ::fivax::dryrun::HoleLevels {pose levels} {
+    lassign $pose P t
+    lassign $levels r bottom ret
+    lmap z [list $r $ret] {
+        list [::fivax::vec::add $P [::fivax::vec::scale [expr {$z - $bottom}] $t]] $t
+    }
 }
 
 # ::fivax::dryrun::AcrossPlane --
@@ -494,6 +517,8 @@ proc ::fivax::dryrun::CutTips {} {
         set d [::fivax::vec::sub $P $P0]
         if {$kind eq "cut" && [::fivax::vec::dot $d $t] > 0.5 * [::fivax::vec::norm $d]} continue
         set up [expr {[lindex $t 2] >= 0.5}]
+        # (a hole's path holds its R plane and return level: no cuts)
+        if {$kind eq "hole"} {set path {}}
         foreach q [concat [lmap pose $path {lindex $pose 0}] [list $P]] {
             lappend out {*}$q $up
         }
@@ -585,12 +610,17 @@ proc ::fivax::dryrun::Grid {x0 y0 x1 y1 top radius} {
 proc ::fivax::dryrun::Move {move} {
     lassign $move kind n from to j0 j1 space model tool path
     if {$kind eq "hole"} {
-        # above the bottom at the height the tool comes from
+        # the control's cycle: a rapid across at the level the tool comes
+        # from to above the hole, down to the R plane, the feed to the
+        # bottom (and back out along the axis: nothing new)
         lassign $to P t
+        set rplane [lindex $path 0]
         set above [::fivax::vec::add $P [::fivax::vec::scale \
             [::fivax::vec::dot [::fivax::vec::sub [lindex $from 0] $P] $t] $t]]
-        if {[Follow rapid $n [Samples $from [list $above $t] {} {} plane {} {} {*}[Step rapid $tool]] $tool]} return
-        Follow cut $n [Samples [list $above $t] $to {} {} plane {} {} {*}[Step cut $tool]] $tool
+        foreach {a b} [list $from [list $above $t] [list $above $t] $rplane] {
+            if {[Follow rapid $n [Samples $a $b {} {} plane {} {} {*}[Step rapid $tool]] $tool]} return
+        }
+        Follow cut $n [Samples $rplane $to {} {} plane {} {} {*}[Step cut $tool]] $tool
         return
     }
     if {$kind eq "rapid" && [Backing $from $to]} {set kind back}

@@ -631,6 +631,13 @@ oo::class create ::fivax::verify::Checker {
         lmap row [lindex $S(frame) 0] {lindex $row 2}
     }
 
+    # Returns {R bottom return}: the R plane, the bottom and the level the
+    # tool returns to of the last canned-cycle hole read, as Z values of
+    # its space (the cycle drills along that Z).
+    method cycleLevels {} {
+        list $S(R) $S(bottom) $S(Z)
+    }
+
     # Returns {P t}: tool tip and axis (workpiece frame) at joints.
     method tip {joints} {
         ::fivax::kin::forward $S(model) $joints
