@@ -29,9 +29,8 @@
 #	program leaves it: each cell lowered by every cut, the cells no cut
 #	reaches that are enclosed by cuts (a boss) at the highest cut near
 #	them (tool axis within 60 deg of +Z), those reached from the box's
-#	edge air. The table's top is the machine's table_top, else the
-#	stock's bottom (the cutter is held to it only when one of them is
-#	given).
+#	edge air. The table's top is the machine's table_top, else with
+#	-stock the stock's bottom, else unknown (no table check).
 #
 #	Bodies are cylinders along the tool axis from the tip: the cutter
 #	(fluteRadii tool radii long, the tool's radius), the shank (up to the
@@ -423,8 +422,10 @@ proc ::fivax::dryrun::Geometry {} {
     }
     if {$box eq ""} return
     lassign $box x0 y0 z0 x1 y1 z1
+    # (no table_top and no -stock: where the part sits is unknown, and a
+    # tilted head's nose rightly passes below the lowest cut)
     set R(table) [dict get $R(machine) table_top]
-    if {$R(table) eq ""} {set R(table) [expr {min($z0, $z1)}]}
+    if {$R(table) eq ""} {set R(table) [expr {$tableGiven ? min($z0, $z1) : -Inf}]}
     set radius 0.0
     foreach move $R(moves) {
         if {[lindex $move 0] ne "switch"} {set radius [expr {max($radius, [lindex $move 8 1])}]}
@@ -761,7 +762,8 @@ proc ::fivax::dryrun::Bodies {pose len r} {
     if {$len eq "" || $len <= $flute} {return $out}
     set nose [expr {$len + $hl}]
     lappend out [list shank [Along $P $t $flute] [Along $P $t $len] $r]
-    if {$hl > 0} {lappend out [list holder [Along $P $t $len] [Along $P $t $nose] [expr {$hd / 2.0}]]}
+    # (a holder is never narrower than its tool: diameter 0 is the tool's)
+    if {$hl > 0} {lappend out [list holder [Along $P $t $len] [Along $P $t $nose] [expr {max($hd / 2.0, $r)}]]}
     if {$nl > 0} {lappend out [list "spindle nose" [Along $P $t $nose] [Along $P $t [expr {$nose + $nl}]] [expr {$nd / 2.0}]]}
     return $out
 }

@@ -32,7 +32,7 @@ namespace eval ::fivax::machine {
         clearance 50 safe_z {} feed_min 1 feed_max 20000
         inverse_time_max 9999 max_swing 180 work_offset 54 tool_change_z 0
         home_rotaries 0 entry_feed {} tcp 0 tcp_codes {} swivel_record TC1
-        travel {} default_rpm {} holder {40 40} spindle_nose {80 60} table_top {}
+        travel {} default_rpm {} holder {0 40} spindle_nose {80 60} table_top {}
     }
     variable topRequired {name axes}
     variable axisKeys {side direction point sense min max continuous prefer rollover offset}
