@@ -68,7 +68,8 @@ oo::define ::fivax::motion::Planner {
     # Returns {native moves}: native 1 and the moves of a native arc, or
     # native 0 and the moves written before it was found that it cannot
     # be one (the caller writes its points): the -arcs setting is points, the control has no arc in the output
-    # frame's plane of the arc, the arc makes extra turns, its ends lie
+    # frame's plane of the arc, the arc is shorter than two steps of the
+    # written X Y Z, the arc makes extra turns, its ends lie
     # at radii more than 0.001 mm apart, the tool axis differs from the
     # last written point's or the arc does not start there. The rotaries
     # stay those of the last point; the record (kind arc) adds start and
@@ -108,9 +109,14 @@ oo::define ::fivax::motion::Planner {
         if {$plane eq "" || (abs($rise) >= 0.0005 && ![dict get $S(output) helix])} {
             return [list 0 $moves]
         }
+        set length [::fivax::curve::arcLength $P0 $P1 $C $n $sense $turns]
+        if {$length < 2.0 * $S(length-step)} {
+            # its ends may be written alike: a control reads an arc that
+            # ends where it starts as a full circle
+            return [list 0 $moves]
+        }
         set joints [concat [::fivax::kin::position $S(model) $P1 $q] $q]
         set f [my FeedClamp $feed]
-        set length [::fivax::curve::arcLength $P0 $P1 $C $n $sense $turns]
         lappend moves [dict merge \
             [my Move arc $joints {X Y Z} $P1 $t [list direct $f $f $length] $src] \
             [dict create start [my Out $jl] center $c plane $plane dir $dir]]
