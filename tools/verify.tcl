@@ -48,7 +48,7 @@ namespace eval ::verifytool {
         {-window {int min 1} 32 N "CL segments searched ahead of the last match"}
         {-dryrun {enum on off} on WHEN "machine dry run: spindle, rapids and bodies through the stock, length compensation, modes, tool lengths, program end"}
         {-stock {maybe reals 6} {} "X0 Y0 Z0 X1 Y1 Z1"
-            "the dry run's stock box in the workpiece frame (default: the box of the program's cutting moves' tips grown by the tool radius)"}
+            "the dry run's stock box in the workpiece frame (default: the part as the program's own cuts show it)"}
         {-tools text {} FILE "tool table for the dry run: lines \"T<n> LENGTH <L> ?RADIUS <R>?\" (# comments)"}
         {-csv text {} FILE "write one row per block: line, op, motion, axes, back-plotted tip and axis, deviations"}
         {-o text {} FILE "write the back-plotted tip path and tool axis as a CLSF"}
@@ -719,6 +719,10 @@ proc ::verifytool::main {argv} {
         lappend problems "$n words of kind '$kind' not understood (a program it cannot read is not verified)"
     }
     foreach event $events {puts $event}
+    if {[dict get $opts -dryrun] eq "on" && ![llength $events]} {
+        Say $opts "verify: dry run: 0 events (spindle, rapids and bodies against the stock, length\
+            compensation, modes, tool lengths, program end)"
+    }
     if {[llength $events]} {
         lappend problems "[llength $events] dry-run events (machine state, stock, bodies: listed above)"
     }
