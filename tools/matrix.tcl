@@ -28,7 +28,7 @@ namespace eval ::matrixtool {
         {-controllers text {fanuc sinumerik heidenhain linuxcnc} "NAMES" "dialects"}
         {-tcp text {0 1} "VALUES" "TCP settings"}
         {-workplane text {auto off} "VALUES" "work-plane settings"}
-        {-tool-length {maybe real gt 0} 50 MM "tool length for CL files without one (replay -tool-length; empty: not given)"}
+        {-tool-length {maybe real gt 0} 100 MM "tool length for CL files without one (replay -tool-length; empty: not given)"}
         {-default-rpm {maybe real gt 0} 10000 RPM "default_rpm of the machines that have none, for CL files without a spindle speed (empty: the machine files as they are)"}
         {-jobs {int min 1} 2 N "cases run at once"}
         {-dir text {} DIR "work directory for the programs (default: a temporary one, removed at the end)"}
