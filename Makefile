@@ -3,7 +3,7 @@ TCLSH ?= tclsh
 DEMO_MACHINE ?= machines/hh-tilt45.tcl
 DEMO_CL ?= tests/data/demo-5ax.cls
 
-.PHONY: all deps test demo docs bench fuzz clean
+.PHONY: all deps test demo docs bench fuzz matrix clean
 
 all: test
 
@@ -37,6 +37,12 @@ docs: deps
 	$(TCLSH) tools/verify.tcl -machine machines/ttr-tr.tcl -cl out/paper.cls -svg docs/verify-ttr out/paper-ttr.nc
 	@rm -f docs/verify-ttr-axes.svg docs/verify-ttr-path.svg
 	$(TCLSH) tools/kinerr.tcl -machine machines/ttr-tr.tcl -d B=0.01 -d C=0.02 -svg docs/kinerr-ttr.svg out/paper-ttr.nc
+
+# The safety matrix (tests/matrix.test): every sample and corpus file on
+# every machine, dialect, TCP and work-plane setting, posted and read back
+# with the dry run. About half an hour.
+matrix: deps
+	FIVAX_MATRIX=1 $(TCLSH) tests/all.tcl -file matrix.test
 
 # End-to-end speed on generated 50k, 200k and 1M-point files (records/s,
 # wall time, peak RSS) beside a minimal loop of ours (BENCH_ARGS: e.g.

@@ -820,11 +820,14 @@ proc ::fivax::dryrun::Slope {a b} {
 #	Returns {x y z h}: the first point of the body of radius r along the
 #	segment a-b (flat discs across its axis, their rims dipping by the
 #	tilt, at most r) that is below the stock's surface h there by more
-#	than eps, or "".
+#	than eps and the cells' own uncertainty, or "".
 proc ::fivax::dryrun::Below {a b r} {
     variable R
     variable eps
     set slope [Slope $a $b]
+    # (the discs are centred on cells, here and in Lower: a tilted rim's
+    # height at a cell is known to a cell's diagonal times its slope)
+    set tol [expr {$eps + min($r, 1.42 * $R(cell) * $slope)}]
     set stencil [lrange [Stencil $r 0] 1 end]
     foreach {x y z} [Discs $a $b] {
         lassign [Cell $x $y] ci cj
@@ -835,7 +838,7 @@ proc ::fivax::dryrun::Below {a b r} {
             set k [expr {$j * $R(nx) + $i}]
             set h [lindex $R(H) $k]
             set low [expr {$z - min($r, $d * $slope)}]
-            if {$h > $low + $eps} {return [list $x $y $low $h]}
+            if {$h > $low + $tol} {return [list $x $y $low $h]}
         }
     }
     return ""

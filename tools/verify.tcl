@@ -42,7 +42,7 @@ namespace eval ::verifytool {
         {-mid-tol {maybe real min 0} {} MM "tip tolerance inside blocks (default: -tol)"}
         {-mid-atol {maybe real min 0} {} DEG "tool axis tolerance inside blocks (default: -atol)"}
         {-controller {maybe word} {} NAME "dialect of the NC text (default: the machine's controller)"}
-        {-tool-length {maybe real} {} MM "tool length (default: the CL's TLDATA, else the program's FIVAX TOOL comments, else the machine's tool_length)"}
+        {-tool-length {maybe real} {} MM "tool length of the tools the CL (-cl) gives none: a CL TLDATA wins, as in the post (default: the program's FIVAX TOOL comments, else the machine's tool_length)"}
         {-table-offset {maybe vec3} {} "X Y Z" "workpiece-frame position of the table reference point"}
         {-arc-tol {real gt 0} 0.002 MM "chord tolerance of CL arcs (the post's -arc-tol)"}
         {-window {int min 1} 32 N "CL segments searched ahead of the last match"}
@@ -100,7 +100,7 @@ proc ::verifytool::Run {opts path machine} {
     variable S
     array unset S
     array set S [list opts $opts path $path machine $machine ops {} op [NewOp program] lines {} \
-        opIndex -1 clPoints {} cursor 0 prev {} cutU "" breakU "" rows {} warnings {} \
+        opIndex -1 clPoints {} clLength "" cursor 0 prev {} cutU "" breakU "" rows {} warnings {} \
         names [lmap a [dict get $machine chain] {dict get $a name}] \
         rollover [lmap a [dict get $machine chain] {dict get $a rollover}] cl {}]
     set S(checker) [::fivax::verify create $machine -table-offset [dict get $opts -table-offset] \
@@ -228,21 +228,23 @@ proc ::verifytool::StartOp {name} {
     set S(breakU) ""
     set S(cursor) 0
     set S(clPoints) {}
-    set len [dict get $S(opts) -tool-length]
+    # (as in the post: the CL's TLDATA wins, -tool-length serves the tools without one)
+    set S(clLength) ""
     if {$S(opIndex) < [llength $S(cl)]} {
         set clop [lindex $S(cl) $S(opIndex)]
         set S(clPoints) [dict get $clop points]
-        if {$len eq ""} {set len [dict get $clop length]}
+        set S(clLength) [dict get $clop length]
     }
+    set len [expr {$S(clLength) ne "" ? $S(clLength) : [dict get $S(opts) -tool-length]}]
     $S(checker) setTool $len
 }
 
 # ::verifytool::ToolComment --
 #	The program's tool comment (FIVAX TOOL n LENGTH len): the tool length
-#	its X Y Z were computed with, unless -tool-length or -cl give one.
+#	its X Y Z were computed with, unless the CL's TLDATA or -tool-length give one.
 proc ::verifytool::ToolComment {len} {
     variable S
-    if {[dict get $S(opts) -tool-length] ne "" || [llength $S(cl)]} return
+    if {[dict get $S(opts) -tool-length] ne "" || $S(clLength) ne ""} return
     $S(checker) setTool $len
 }
 
