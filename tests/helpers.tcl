@@ -320,7 +320,7 @@ proc verifyReplayOutput {argList} {
     }
     set vargs [list -quiet -machine [dict get $opts -machine] -cl $cl]
     if {[dict exists $opts -msys]} {lappend vargs -msys}
-    foreach key {-table-offset -controller -arc-tol -tool-length} {
+    foreach key {-table-offset -controller -arc-tol -tool-length -dryrun} {
         if {[dict exists $opts $key]} {lappend vargs $key [dict get $opts $key]}
     }
     # inside blocks: the replay's tolerances (0: not linearised) plus
