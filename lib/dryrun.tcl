@@ -102,7 +102,7 @@ proc ::fivax::dryrun::run {machine lines args} {
         offset "" pending "" tool "" length [dict get $machine tool_length] radius 0.0 \
         comp 0 spindle 0 speed "" coolant 0 spindleSaid 0 end 0 endSaid 0 \
         pose "" joints "" space joint model ""]
-    set checker [::fivax::verify create $machine -table-offset [dict get $opts -table-offset] \
+    set checker [::fivax::verify reader $machine -table-offset [dict get $opts -table-offset] \
         -controller $controller]
     if {[dict get $opts -tool-length] ne ""} {set R(length) [dict get $opts -tool-length]}
     try {

@@ -35,7 +35,7 @@
 #	tip and axis in the workpiece frame in each.
 
 namespace eval ::fivax::verify {
-    namespace export create dialects
+    namespace export create reader dialects
     namespace ensemble create -prefixes 0
     variable Options {
         {-table-offset {maybe vec3} {} "X Y Z"
@@ -102,6 +102,15 @@ namespace eval ::fivax::verify {
 proc ::fivax::verify::create {machine args} {
     variable Options
     Checker new $machine [::fivax::opts::parse $Options $args "verify create"]
+}
+
+# ::fivax::verify::reader --
+#	Returns a new Checker in this interpreter, as create does (a host may
+#	route create to a check process: tools/lib/checkproc.tcl); the dry
+#	run reads with it.
+proc ::fivax::verify::reader {machine args} {
+    variable Options
+    Checker new $machine [::fivax::opts::parse $Options $args "verify reader"]
 }
 
 # ::fivax::verify::dialects -- Returns the names of the dialects the checker reads.
