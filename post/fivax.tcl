@@ -95,10 +95,11 @@ proc fivax_dryrun {} {
         -table-offset [dict get $fivax(settings) -table-offset]]
     set fivax(lines) {}
     if {![llength $events]} return
+    # (every line shown names its place: the count of the rest goes first)
     set shown [fivax::dryrun format [lrange $events 0 19] [fivax_program_name]]
-    if {[llength $events] > 20} {lappend shown "... [expr {[llength $events] - 20}] more"}
+    set rest [expr {[llength $events] > 20 ? " (the first 20 shown)" : ""}]
     fivax::Fail DRYRUN EVENTS "the dry run of the written program found [llength $events]\
-        events:\n[join $shown \n]"
+        events$rest:\n[join $shown \n]"
 }
 
 # fivax_log --
