@@ -64,6 +64,11 @@ namespace eval ::fivax::dryrun {
     # this many cells (20 to 40 mm on a 300 mm part).
     variable nearCells 8
     variable minCell 0.25
+    # The side (cells) of the blocks whose highest cell is kept (a quick
+    # test that a body stays above all of a region).
+    variable blockCells 8
+    # Poses of a move tested at once for a tool well clear (see Clear).
+    variable chunk 16
     # The height of a cell with no stock.
     variable air -1e9
     # How far (mm) a body may dip below the stock's surface or the table
@@ -449,6 +454,7 @@ proc ::fivax::dryrun::Geometry {} {
         set R(final) 1
         Outside
     }
+    Blocks
     foreach move $R(moves) {
         set kind [lindex $move 0]
         if {$kind eq "switch"} {
@@ -702,24 +708,29 @@ proc ::fivax::dryrun::Follow {kind n poses tool} {
     variable R
     variable eps
     lassign $tool len r
+    variable chunk
     set last [lindex $poses end]
     set seen ""
+    set i 0
     foreach pose $poses {
-        set bodies [Bodies $pose $len $r]
+        if {$i % $chunk == 0} {
+            set clear [expr {!$R(silent) && [Clear $kind [lrange $poses $i [expr {$i + $chunk - 1}]] $tool]}]
+        }
+        incr i
         if {$kind eq "cut" && !$R(final)} {
             # (the cutter's end: the flutes above it follow it down, or
             # cut only where it passed)
-            lassign [lindex $bodies 0] - a b rr
-            Lower $a $b $rr
+            lassign $pose P t
+            Lower $P [Along $P $t 1.0] $r
         }
-        if {$R(silent)} continue
+        if {$R(silent) || $clear} continue
         if {$kind eq "cut"} {
             # a cut's other bodies: every tool diameter and at its end
             if {$pose ne $last && $seen ne ""
                     && [::fivax::vec::dist [lindex $pose 0] $seen] < 2.0 * $r} continue
             set seen [lindex $pose 0]
         }
-        foreach body $bodies {
+        foreach body [Bodies $pose $len $r] {
             lassign $body name a b rr
             if {$name ne "cutter" || $kind eq "rapid"} {
                 set z [Below $a $b $rr]
@@ -746,26 +757,77 @@ proc ::fivax::dryrun::Follow {kind n poses tool} {
 
 # ::fivax::dryrun::Bodies --
 #	Returns the bodies {name a b radius} (from a up to b along the tool
-#	axis) of a tool of length len (its own length: tip to holder) and
-#	radius r at pose {P t}: cutter (fluteRadii radii long), and, when the
-#	length is known (longer than the cutter), the shank up to the length,
-#	the holder above it and the spindle nose above that (machine keys
-#	holder and spindle_nose).
+#	axis) of a tool of length len and radius r at pose {P t} (see Shapes).
 proc ::fivax::dryrun::Bodies {pose len r} {
+    lassign $pose P t
+    lmap {name s0 s1 rr} [Shapes $len $r] {
+        list $name [Along $P $t $s0] [Along $P $t $s1] $rr
+    }
+}
+
+# ::fivax::dryrun::Shapes --
+#	Returns {name s0 s1 radius ...}: the bodies of a tool of length len
+#	(its own length: tip to holder) and radius r, each from s0 to s1 mm
+#	along the tool axis from the tip: cutter (fluteRadii radii long),
+#	and, when the length is known (longer than the cutter), the shank up
+#	to the length, the holder above it and the spindle nose above that
+#	(machine keys holder and spindle_nose).
+proc ::fivax::dryrun::Shapes {len r} {
     variable R
     variable fluteRadii
-    lassign $pose P t
+    if {[info exists R(shapes,$len,$r)]} {return $R(shapes,$len,$r)}
     set flute [expr {max($fluteRadii * $r, $R(cell))}]
     lassign [dict get $R(machine) holder] hd hl
     lassign [dict get $R(machine) spindle_nose] nd nl
-    set out [list [list cutter $P [Along $P $t $flute] $r]]
-    if {$len eq "" || $len <= $flute} {return $out}
-    set nose [expr {$len + $hl}]
-    lappend out [list shank [Along $P $t $flute] [Along $P $t $len] $r]
-    # (a holder is never narrower than its tool: diameter 0 is the tool's)
-    if {$hl > 0} {lappend out [list holder [Along $P $t $len] [Along $P $t $nose] [expr {max($hd / 2.0, $r)}]]}
-    if {$nl > 0} {lappend out [list "spindle nose" [Along $P $t $nose] [Along $P $t [expr {$nose + $nl}]] [expr {$nd / 2.0}]]}
-    return $out
+    set out [list cutter 0.0 $flute $r]
+    if {$len ne "" && $len > $flute} {
+        set nose [expr {$len + $hl}]
+        lappend out shank $flute $len $r
+        # (a holder is never narrower than its tool: diameter 0 is the tool's)
+        if {$hl > 0} {lappend out holder $len $nose [expr {max($hd / 2.0, $r)}]}
+        if {$nl > 0} {lappend out "spindle nose" $nose [expr {$nose + $nl}] [expr {$nd / 2.0}]}
+    }
+    set R(shapes,$len,$r) $out
+}
+
+# ::fivax::dryrun::Clear --
+#	Returns 1 when at every one of the poses the tool {length radius} of
+#	a move of kind stays above the stock and the table by more than eps
+#	(see Follow: what it checks), taking its bodies as one cylinder as
+#	wide as the widest (a quick test before Follow's body by body).
+proc ::fivax::dryrun::Clear {kind poses tool} {
+    variable R
+    variable eps
+    lassign $tool len r
+    set shapes [Shapes $len $r]
+    set top [lindex $shapes end-1]
+    set wide 0.0
+    foreach {- - - rr} $shapes {set wide [expr {max($wide, $rr)}]}
+    # (the stock: the cutter only on a rapid; the table: the cutter only
+    # when the cutter's own table check is on)
+    set fromStock [expr {$kind eq "rapid" ? 0.0 : [lindex $shapes 2]}]
+    set fromTable [expr {$R(cutterToTable) ? 0.0 : [lindex $shapes 2]}]
+    set zStock Inf
+    set zTable Inf
+    set xs {}
+    set ys {}
+    foreach pose $poses {
+        lassign $pose P t
+        lassign [Along $P $t $top] bx by bz
+        lassign [Along $P $t $fromTable] - - az
+        set zTable [expr {min($zTable, $az, $bz)}]
+        lassign [Along $P $t $fromStock] ax ay az
+        set zStock [expr {min($zStock, $az, $bz)}]
+        lappend xs $ax $bx
+        lappend ys $ay $by
+    }
+    if {$zTable - $wide < $R(table) - $eps} {return 0}
+    if {$fromStock >= $top} {return 1}
+    set n [expr {int(ceil($wide / $R(cell)))}]
+    lassign [Cell [tcl::mathfunc::min {*}$xs] [tcl::mathfunc::min {*}$ys]] i0 j0
+    lassign [Cell [tcl::mathfunc::max {*}$xs] [tcl::mathfunc::max {*}$ys]] i1 j1
+    expr {[Highest [expr {$i0 - $n}] [expr {$j0 - $n}] [expr {$i1 + $n}] [expr {$j1 + $n}]]
+        <= $zStock - $wide + $eps}
 }
 
 # ::fivax::dryrun::Along -- Returns P + s t.
@@ -828,9 +890,24 @@ proc ::fivax::dryrun::Below {a b r} {
     # (the discs are centred on cells, here and in Lower: a tilted rim's
     # height at a cell is known to a cell's diagonal times its slope)
     set tol [expr {$eps + min($r, 1.42 * $R(cell) * $slope)}]
-    set stencil [lrange [Stencil $r 0] 1 end]
+    set stencil [Stencil $r 0]
+    set n [lindex $stencil 0]
+    # (no disc dips lower than its centre less r, nor than its rim)
+    set dip [expr {min($r, $r * $slope)}]
+    set low [expr {min([lindex $a 2], [lindex $b 2]) - $dip + $tol}]
+    # (no cell is above the stock's top)
+    if {$low >= $R(top)} {return ""}
+    lassign [Cell [expr {min([lindex $a 0], [lindex $b 0])}] [expr {min([lindex $a 1], [lindex $b 1])}]] i0 j0
+    lassign [Cell [expr {max([lindex $a 0], [lindex $b 0])}] [expr {max([lindex $a 1], [lindex $b 1])}]] i1 j1
+    if {[Highest [expr {$i0 - $n}] [expr {$j0 - $n}] [expr {$i1 + $n}] [expr {$j1 + $n}]]
+            <= $low} {
+        return ""
+    }
+    set stencil [lrange $stencil 1 end]
     foreach {x y z} [Discs $a $b] {
         lassign [Cell $x $y] ci cj
+        if {[Highest [expr {$ci - $n}] [expr {$cj - $n}] [expr {$ci + $n}] [expr {$cj + $n}]]
+                <= $z - $dip + $tol} continue
         foreach {di dj d -} $stencil {
             set i [expr {$ci + $di}]
             set j [expr {$cj + $dj}]
@@ -844,6 +921,83 @@ proc ::fivax::dryrun::Below {a b r} {
     return ""
 }
 
+# ::fivax::dryrun::Highest --
+#	Returns a height no cell of the map in columns i0..i1, rows j0..j1
+#	exceeds (air when none is in the map): the largest of the maxima of
+#	the blocks of blockCells x blockCells cells they lie in, each
+#	recomputed when a cut lowered a cell of it since (see Lowered).
+proc ::fivax::dryrun::Highest {i0 j0 i1 j1} {
+    variable R
+    variable air
+    variable blockCells
+    set i0 [expr {max(0, $i0) / $blockCells}]
+    set j0 [expr {max(0, $j0) / $blockCells}]
+    set i1 [expr {min($R(nx) - 1, $i1)}]
+    set j1 [expr {min($R(ny) - 1, $j1)}]
+    if {$i1 < 0 || $j1 < 0} {return $air}
+    set i1 [expr {$i1 / $blockCells}]
+    set j1 [expr {$j1 / $blockCells}]
+    set top $air
+    for {set bj $j0} {$bj <= $j1} {incr bj} {
+        for {set bi $i0} {$bi <= $i1} {incr bi} {
+            set k [expr {$bj * $R(bx) + $bi}]
+            if {[info exists R(dirty,$k)]} {
+                unset R(dirty,$k)
+                lset R(B) $k [BlockTop $bi $bj]
+            }
+            set top [expr {max($top, [lindex $R(B) $k])}]
+        }
+    }
+    return $top
+}
+
+# ::fivax::dryrun::Blocks -- Sets the maxima of the map's blocks (see Highest) from its cells.
+proc ::fivax::dryrun::Blocks {} {
+    variable R
+    variable blockCells
+    array unset R dirty,*
+    set R(bx) [expr {($R(nx) + $blockCells - 1) / $blockCells}]
+    set R(by) [expr {($R(ny) + $blockCells - 1) / $blockCells}]
+    set R(B) {}
+    for {set bj 0} {$bj < $R(by)} {incr bj} {
+        for {set bi 0} {$bi < $R(bx)} {incr bi} {lappend R(B) [BlockTop $bi $bj]}
+    }
+}
+
+# ::fivax::dryrun::BlockTop -- Returns the highest cell of block bi bj.
+proc ::fivax::dryrun::BlockTop {bi bj} {
+    variable R
+    variable air
+    variable blockCells
+    set top $air
+    set i0 [expr {$bi * $blockCells}]
+    set i1 [expr {min($R(nx), $i0 + $blockCells) - 1}]
+    set j1 [expr {min($R(ny), ($bj + 1) * $blockCells)}]
+    for {set j [expr {$bj * $blockCells}]} {$j < $j1} {incr j} {
+        set k [expr {$j * $R(nx)}]
+        foreach h [lrange $R(H) [expr {$k + $i0}] [expr {$k + $i1}]] {
+            if {$h > $top} {set top $h}
+        }
+    }
+    return $top
+}
+
+# ::fivax::dryrun::Lowered --
+#	Marks the blocks of the cells within n of cell ci cj for Highest to
+#	recompute (a cut lowered cells there).
+proc ::fivax::dryrun::Lowered {ci cj n} {
+    variable R
+    variable blockCells
+    if {![info exists R(B)]} return
+    set i0 [expr {max(0, $ci - $n) / $blockCells}]
+    set j0 [expr {max(0, $cj - $n) / $blockCells}]
+    set i1 [expr {min($R(nx) - 1, $ci + $n) / $blockCells}]
+    set j1 [expr {min($R(ny) - 1, $cj + $n) / $blockCells}]
+    for {set bj $j0} {$bj <= $j1} {incr bj} {
+        for {set bi $i0} {$bi <= $i1} {incr bi} {set R(dirty,[expr {$bj * $R(bx) + $bi}]) 1}
+    }
+}
+
 # ::fivax::dryrun::Lower --
 #	Lowers the stock to the cutter's end, the disc of radius r at a
 #	across the axis a-b.
@@ -855,6 +1009,7 @@ proc ::fivax::dryrun::Lower {a b r} {
     lassign [Cell $x $y] ci cj
     set stencil [Stencil $r 1]
     set n [lindex $stencil 0]
+    Lowered $ci $cj $n
     set k0 [expr {$cj * $R(nx) + $ci}]
     if {$ci >= $n && $cj >= $n && $ci + $n < $R(nx) && $cj + $n < $R(ny)} {
         # (inside the map: no cell to skip)
