@@ -11,7 +11,7 @@
 #	is a full circle.
 
 namespace eval ::fivax::curve {
-    namespace export arc arcSplit arcLength nurbs nurbsAt nurbsPoints nurbsSamples clsfNurbs
+    namespace export arc arcSplit arcLength radius nurbs nurbsAt nurbsPoints nurbsSamples clsfNurbs
     namespace ensemble create -prefixes 0
     namespace upvar ::fivax::num pi pi
     # The largest size (mm) of a curve point's coordinates (arc points,
@@ -65,6 +65,13 @@ proc ::fivax::curve::arcLength {start end center axis sense turns} {
     if {$frame eq ""} {return [::fivax::vec::dist $end $start]}
     lassign $frame - - hs he r0 r1 - sweep
     expr {hypot(0.5 * ($r0 + $r1) * $sweep, $he - $hs)}
+}
+
+# ::fivax::curve::radius -- Returns the distance of point p from the line through center along axis.
+proc ::fivax::curve::radius {p center axis} {
+    set n [::fivax::vec::unit $axis]
+    set d [::fivax::vec::sub $p $center]
+    ::fivax::vec::norm [::fivax::vec::sub $d [::fivax::vec::scale [::fivax::vec::dot $d $n] $n]]
 }
 
 # ::fivax::curve::ArcFrame --

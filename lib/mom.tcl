@@ -30,6 +30,8 @@ namespace eval ::fivax::mom {
     # Record kinds that belong to an operation's header: they are gathered
     # until the first other record, then MOM_start_of_path fires with them.
     variable headerKinds {TLDATA CUTTER MSYS LOAD SELECT UNITS SPINDL COOLNT}
+    # How far (mm) an arc's start or end may lie off its CIRCLE's radius.
+    variable arcRadiusTol 0.01
     # CYCLE words: the NX cycle event of a cycle type and modifier.
     variable cycleEvents {
         DRILL drill  DRILL,DEEP drill_deep  DEEP drill_deep
@@ -730,6 +732,11 @@ oo::class create ::fivax::mom::Runtime {
         if {!$S(pathOpen) || $S(headerPending)} {my EnsurePath}
         if {[llength [dict get $rec axis]]} {set S(axis) [dict get $rec axis]}
         set point [dict get $rec point]
+        if {[llength $S(circle)] && ($S(rapid) || [llength $S(cycle)])} {
+            ::fivax::Fail MOM ARC "[::fivax::mom::Where $S(circle)]: CIRCLE: the next GOTO\
+                (line [dict get $rec line]) is [expr {$S(rapid) ? "a rapid move" : "a cycle's hole"}],\
+                not the arc's end"
+        }
         if {[llength $S(cycle)]} {
             my Hole $rec $point
             return
@@ -841,6 +848,7 @@ oo::class create ::fivax::mom::Runtime {
         set start $S(point)
         set center [dict get $circle center]
         set axis [dict get $circle axis]
+        my ArcRadius $circle $start $end
         set sense [expr {[llength [dict get $circle numbers]] >= 11 ? -1 : 1}]
         set times [dict get $circle times]
         set helix [expr {$times > 0 || abs([::fivax::vec::dot [::fivax::vec::sub $end $start] \
@@ -880,6 +888,26 @@ oo::class create ::fivax::mom::Runtime {
             set from $p
             my SetPosition $p $S(axis)
             my Move $event
+        }
+    }
+
+    # ArcRadius --
+    #	Checks that the arc's start and end lie on its CIRCLE's radius
+    #	(when given) within arcRadiusTol mm (NX writes 4 decimals: 0.0002
+    #	mm in the corpus).
+    #	Errors: {FIVAX MOM ARC}.
+    method ArcRadius {circle start end} {
+        set radius [dict get $circle radius]
+        if {$radius eq ""} return
+        set tol [expr {$::fivax::mom::arcRadiusTol / ($S(outUnit) eq "IN" ? 25.4 : 1.0)}]
+        set center [dict get $circle center]
+        set axis [dict get $circle axis]
+        foreach p [list $start $end] what {start end} {
+            set r [::fivax::curve::radius $p $center $axis]
+            if {!(abs($r - $radius) <= $tol)} {
+                ::fivax::Fail MOM ARC [::format "%s: CIRCLE: the arc's %s lies %.4f mm from its axis,\
+                    its radius is %g mm" [::fivax::mom::Where $circle] $what $r $radius]
+            }
         }
     }
 

@@ -15,8 +15,9 @@
 #	           nothing but the NC file and its log in the case directory
 #	  refused  exit 1 and one line on stderr: "FILE:LINE: message" (CL
 #	           problems), "replay: ..." (command line, output) or
-#	           "MACHINEFILE: ..." (machine file); no output file, no file
-#	           left behind
+#	           "MACHINEFILE: ..." (machine file), or the dry run's
+#	           "FILE:LINE: the dry run ... found N events" and its events
+#	           "NC:LINE: kind: what"; no output file, no file left behind
 #	and never: a Tcl stack trace, an "internal error", a time-out, another
 #	exit status, an evaluated payload (a canary file that must not appear),
 #	NaN or Inf in the output, a partial or stray file. Any such failure
@@ -658,6 +659,8 @@ proc ::fuzz::Classify {c} {
         if {[string match "*internal error*" $last] || [regexp $badMessages $last]} {
             lappend classes internal
         } elseif {![regexp {^(in\.cls|<stdin>):\d+: \S} $last]
+                && !([regexp -line {^(in\.cls|<stdin>):\d+: the dry run of the written program found} $err]
+                     && [regexp {^\S+:\d+: \S} $last])
                 && ![regexp {^replay: \S} $last]
                 && [string first "[MachineArg $c]: " $last] != 0
                 && !([string match "*args:*" [dict get $c tags]] && [regexp {^(\S+: (machine file not found|cannot read)|usage: )} $last])} {
