@@ -145,7 +145,7 @@ proc fivax_close_log {} {
 #	kinematics), the output unit of the machine, arcs and helixes in pieces
 #	of at most 360 degrees.
 fivax_handler fivax_setup {
-    global fivax fivax_settings fivax_post_dir env
+    global fivax fivax_settings env
     global mom_kin_machine_type mom_kin_output_unit mom_kin_arc_output_mode
     global mom_kin_helical_arc_output_mode mom_kin_nurbs_output_type
     if {![info exists fivax_settings]} {set fivax_settings {}}
@@ -153,10 +153,7 @@ fivax_handler fivax_setup {
     if {[info exists env(FIVAX_SETTINGS)] && [string is list $env(FIVAX_SETTINGS)]} {
         lappend given {*}$env(FIVAX_SETTINGS)
     }
-    set settings [fivax::settings parse $given]
-    if {[dict get $settings -machine] eq ""} {
-        dict set settings -machine [file join $fivax_post_dir .. machines hh-tilt45.tcl]
-    }
+    set settings [fivax::settings complete [fivax::settings parse $given]]
     set fivax(settings) $settings
     set fivax(machine) [fivax::machine load [dict get $settings -machine]]
     set fivax(log) {}
@@ -193,19 +190,14 @@ fivax_handler MOM_start_of_program {
         error "NX writes in $mom_output_unit but the machine [dict get $machine name] is in\
             [dict get $machine units]: set the output unit of the post to $unit"
     }
-    # The .def NX loaded with this post is the one source of formats.
+    # The .def NX loaded with this post is the one source of formats; the
+    # settings are checked against its resolution as the command line does.
     set defFile [file join $fivax_post_dir fivax.def]
     if {[info exists mom_definition_file_name] && $mom_definition_file_name ne ""} {
         set defFile $mom_definition_file_name
     }
-    set options [list -def [fivax::def load $defFile] -warn fivax_warn \
-        -insert [dict get $fivax(settings) -insert] -arc-words [dict get $fivax(settings) -arc-words]]
-    foreach key {-controller -tcp} {
-        if {[dict get $fivax(settings) $key] ne ""} {
-            lappend options $key [dict get $fivax(settings) $key]
-        }
-    }
-    set fivax(out) [fivax::output create $machine {*}$options]
+    set fivax(out) [fivax::settings output $fivax(settings) $machine $defFile fivax_settings \
+        -warn fivax_warn]
     set planOptions [fivax::settings pick $fivax(settings) motion]
     if {![dict get [$fivax(out) capabilities] inverse] && [dict get $planOptions -feed] eq "inverse"} {
         # no inverse time (Klartext): F is the feed of all axes together,
@@ -303,9 +295,7 @@ proc fivax_tool_length {what} {
     set given [dict get $fivax(settings) -tool-length]
     if {$given ne ""} {return $given}
     set machine $fivax(machine)
-    set tcp [dict get $fivax(settings) -tcp]
-    if {$tcp eq ""} {set tcp [dict get $machine tcp]}
-    if {!$tcp && [dict get $machine kind] ne "tabletable"} {
+    if {![dict get [$fivax(out) capabilities] tcp] && [dict get $machine kind] ne "tabletable"} {
         error "$what has no length in the CL (no TLDATA; a CUTTER height is\
             not a gauge length), and joint mode on [dict get $machine name] (a head machine)\
             computes X Y Z from it: give the tool's length with -tool-length MM"
