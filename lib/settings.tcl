@@ -5,8 +5,10 @@
 #	arc tolerance) and those of the planner, each spelt once.
 
 namespace eval ::fivax::settings {
-    namespace export table parse pick check
+    namespace export table parse complete pick check output
     namespace ensemble create -prefixes 0
+    # The machine of a job that names none.
+    variable defaultMachine [file join [file dirname $::fivax::home] machines hh-tilt45.tcl]
     variable Job {
         {-machine text {} FILE "machine file (default: the post's machine, machines/hh-tilt45.tcl)"}
         {-arc-tol {real gt 0} 0.002 MM "chord tolerance of arcs written as points"}
@@ -44,6 +46,18 @@ proc ::fivax::settings::parse {given} {
         ::fivax::Fail OPTION VALUE "fivax_settings: not a dict of option value pairs"
     }
     ::fivax::opts::parse [table] $given fivax_settings
+}
+
+# ::fivax::settings::complete --
+#	Returns settings (a parsed settings dict) with what the installation
+#	gives filled in: -machine, when empty, is the default machine
+#	(machines/hh-tilt45.tcl beside lib/).
+proc ::fivax::settings::complete {settings} {
+    variable defaultMachine
+    if {[dict get $settings -machine] eq ""} {
+        dict set settings -machine $defaultMachine
+    }
+    return $settings
 }
 
 # ::fivax::settings::pick --
@@ -87,4 +101,28 @@ proc ::fivax::settings::check {settings machine resolution {who fivax_settings}}
             }
         }
     }
+}
+
+# ::fivax::settings::output --
+#	Returns a new output Writer (fivax::output create) for machine (a
+#	fivax::machine dict) with the .def file defFile and the output
+#	settings of settings (-controller and -tcp when set, else the
+#	machine's; -arc-words, -insert), plus the output options args (e.g.
+#	-warn cmd); first checks settings against its resolution (check, with
+#	who). Errors: those of fivax::def load, fivax::output create and check.
+proc ::fivax::settings::output {settings machine defFile who args} {
+    set options [list -def [::fivax::def load $defFile]]
+    foreach key {-arc-words -insert -controller -tcp} {
+        if {[dict get $settings $key] ne ""} {
+            lappend options $key [dict get $settings $key]
+        }
+    }
+    set out [::fivax::output create $machine {*}$options {*}$args]
+    try {
+        check $settings $machine [$out resolution] $who
+    } on error {msg opts} {
+        $out destroy
+        return -options $opts $msg
+    }
+    return $out
 }

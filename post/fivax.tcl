@@ -24,16 +24,25 @@ foreach fivax_dir [list [file join $fivax_post_dir lib] [file join $fivax_post_d
         set auto_path [linsert $auto_path 0 $fivax_dir]
     }
 }
-package require fivax 0.1
 unset fivax_dir
+# (before fivax_abort exists: a post copied without lib/ stops with a message)
+if {[catch {package require fivax 0.1} fivax_msg]} {
+    MOM_abort "fivax cannot load its library (lib/ must sit next to post/, see README.md,\
+        Using the post inside NX): $fivax_msg"
+    return
+}
+unset fivax_msg
 
 # fivax_abort --
-#	Ends posting on the error msg (return options opts) of a handler:
-#	MOM_abort with the CL position and operation, so that inside NX every
-#	fivax error ends posting with a message; the message goes to the log
-#	too.
+#	Ends posting on the error msg (return options opts) of a handler, the
+#	one way every failure leaves the post: MOM_abort with the message,
+#	the CL position and the operation, the message also in the log (never
+#	a Tcl trace). An error that is no fivax error is marked "internal
+#	error" (a bug to report), as the command line marks it.
 proc fivax_abort {msg opts} {
-    global mom_path_name
+    global fivax mom_path_name
+    set code [dict get $opts -errorcode]
+    if {[lindex $code 0] ne "FIVAX"} {set msg "internal error: $msg"}
     # messages from the planner and the reader start with the position
     set where [fivax_where]
     if {![string match "event *" $where] && ![regexp {^(\S+:\d+|CL point \([^)]*\)): } $msg]} {
@@ -42,23 +51,27 @@ proc fivax_abort {msg opts} {
     if {[info exists mom_path_name] && $mom_path_name ne ""} {
         append msg " (operation $mom_path_name)"
     }
-    global fivax
-    if {[lindex [dict get $opts -errorcode] 0] ne "FIVAX"} {
-        lappend fivax(log) "internal error: [dict get $opts -errorinfo]"
-    }
     lappend fivax(log) "error: $msg"
-    fivax_close_log
+    if {$code ne {FIVAX POST LOG}} {
+        try {
+            fivax_close_log
+        } trap {FIVAX POST LOG} {logMsg} {
+            append msg "; $logMsg"
+        }
+    }
     MOM_abort $msg
     # (NX's MOM_abort does not return; a host whose one does gets the error)
-    return -code error -errorcode [dict get $opts -errorcode] $msg
+    return -code error -errorcode $code $msg
 }
 
 # fivax_handler --
 #	Defines the proc name (no arguments: an event handler) that runs body
-#	and turns any error of it into fivax_abort. (The body is the proc's
-#	own, compiled with it: no uplevel on every event.)
+#	and turns any error of it into fivax_abort. (The body is a lambda,
+#	compiled at the first call and kept, so that an error raised one
+#	level up, fivax::Fail in the body itself, is caught too; no uplevel
+#	on every event.)
 proc fivax_handler {name body} {
-    proc $name {} [list try $body on error {msg opts} {fivax_abort $msg $opts}]
+    proc $name {} [list try [list apply [list {} $body]] on error {msg opts} {fivax_abort $msg $opts}]
 }
 
 # fivax_where -- Returns FILE:LINE of the current CL record (replay), else the operation and point.
@@ -121,7 +134,8 @@ proc fivax_warn {text} {
 # fivax_close_log --
 #	Writes the log lines to the log file: the setting -log, else
 #	<output>.log beside the NC file when NX names one; nothing when there
-#	is no line or no file.
+#	is no line or no file. Errors: {FIVAX POST LOG} when the file cannot
+#	be written (its lines are dropped).
 proc fivax_close_log {} {
     global fivax mom_output_file_directory mom_output_file_basename
     if {![info exists fivax(log)] || ![llength $fivax(log)] || ![info exists fivax(settings)]} return
@@ -130,13 +144,18 @@ proc fivax_close_log {} {
         set file [file join $mom_output_file_directory $mom_output_file_basename.log]
     }
     if {$file eq ""} return
-    set chan [open $file w]
-    try {
-        puts $chan [join $fivax(log) \n]
-    } finally {
-        close $chan
-    }
+    set lines $fivax(log)
     set fivax(log) {}
+    try {
+        set chan [open $file w]
+        try {
+            puts $chan [join $lines \n]
+        } finally {
+            close $chan
+        }
+    } trap {POSIX} {msg} {
+        fivax::Fail POST LOG "the log file cannot be written: $msg"
+    }
 }
 
 # fivax_setup --
@@ -145,7 +164,7 @@ proc fivax_close_log {} {
 #	kinematics), the output unit of the machine, arcs and helixes in pieces
 #	of at most 360 degrees.
 fivax_handler fivax_setup {
-    global fivax fivax_settings fivax_post_dir env
+    global fivax fivax_settings env
     global mom_kin_machine_type mom_kin_output_unit mom_kin_arc_output_mode
     global mom_kin_helical_arc_output_mode mom_kin_nurbs_output_type
     if {![info exists fivax_settings]} {set fivax_settings {}}
@@ -153,10 +172,7 @@ fivax_handler fivax_setup {
     if {[info exists env(FIVAX_SETTINGS)] && [string is list $env(FIVAX_SETTINGS)]} {
         lappend given {*}$env(FIVAX_SETTINGS)
     }
-    set settings [fivax::settings parse $given]
-    if {[dict get $settings -machine] eq ""} {
-        dict set settings -machine [file join $fivax_post_dir .. machines hh-tilt45.tcl]
-    }
+    set settings [fivax::settings complete [fivax::settings parse $given]]
     set fivax(settings) $settings
     set fivax(machine) [fivax::machine load [dict get $settings -machine]]
     set fivax(log) {}
@@ -190,22 +206,17 @@ fivax_handler MOM_start_of_program {
     set machine $fivax(machine)
     set unit [expr {[dict get $machine units] eq "inch" ? "IN" : "MM"}]
     if {[info exists mom_output_unit] && $mom_output_unit ne "" && $mom_output_unit ne $unit} {
-        error "NX writes in $mom_output_unit but the machine [dict get $machine name] is in\
-            [dict get $machine units]: set the output unit of the post to $unit"
+        fivax::Fail POST UNIT "NX writes in $mom_output_unit but the machine [dict get $machine name]\
+            is in [dict get $machine units]: set the output unit of the post to $unit"
     }
-    # The .def NX loaded with this post is the one source of formats.
+    # The .def NX loaded with this post is the one source of formats; the
+    # settings are checked against its resolution as the command line does.
     set defFile [file join $fivax_post_dir fivax.def]
     if {[info exists mom_definition_file_name] && $mom_definition_file_name ne ""} {
         set defFile $mom_definition_file_name
     }
-    set options [list -def [fivax::def load $defFile] -warn fivax_warn \
-        -insert [dict get $fivax(settings) -insert] -arc-words [dict get $fivax(settings) -arc-words]]
-    foreach key {-controller -tcp} {
-        if {[dict get $fivax(settings) $key] ne ""} {
-            lappend options $key [dict get $fivax(settings) $key]
-        }
-    }
-    set fivax(out) [fivax::output create $machine {*}$options]
+    set fivax(out) [fivax::settings output $fivax(settings) $machine $defFile fivax_settings \
+        -warn fivax_warn]
     set planOptions [fivax::settings pick $fivax(settings) motion]
     if {![dict get [$fivax(out) capabilities] inverse] && [dict get $planOptions -feed] eq "inverse"} {
         # no inverse time (Klartext): F is the feed of all axes together,
@@ -261,8 +272,9 @@ fivax_handler MOM_tool_change {
     global fivax mom_tool_number mom_tool_length_adjust_register
     if {![info exists mom_tool_number] || ![string is entier -strict $mom_tool_number]
             || $mom_tool_number < 1} {
-        error "tool change to tool '[expr {[info exists mom_tool_number] ? $mom_tool_number : ""}]':\
-            the tool needs a number of 1 or more (set it in the CAM tool)"
+        set n [expr {[info exists mom_tool_number] ? $mom_tool_number : ""}]
+        fivax::Fail POST TOOL "tool change to tool '$n': the tool needs a number of 1 or more\
+            (set it in the CAM tool)"
     }
     set len [fivax_tool_length "tool $mom_tool_number"]
     set adjust $mom_tool_number
@@ -303,10 +315,8 @@ proc fivax_tool_length {what} {
     set given [dict get $fivax(settings) -tool-length]
     if {$given ne ""} {return $given}
     set machine $fivax(machine)
-    set tcp [dict get $fivax(settings) -tcp]
-    if {$tcp eq ""} {set tcp [dict get $machine tcp]}
-    if {!$tcp && [dict get $machine kind] ne "tabletable"} {
-        error "$what has no length in the CL (no TLDATA; a CUTTER height is\
+    if {![dict get [$fivax(out) capabilities] tcp] && [dict get $machine kind] ne "tabletable"} {
+        fivax::Fail POST LENGTH "$what has no length in the CL (no TLDATA; a CUTTER height is\
             not a gauge length), and joint mode on [dict get $machine name] (a head machine)\
             computes X Y Z from it: give the tool's length with -tool-length MM"
     }
@@ -411,8 +421,8 @@ proc fivax_cutting {what} {
         fivax_warn "no spindle speed in the CL: started at the machine's default_rpm,\
             [format %g $speed] rpm"
     } elseif {$speed eq ""} {
-        error "$what with the spindle stopped: the CL gives no speed (SPINDL) and the\
-            machine [dict get $fivax(machine) name] has no default_rpm"
+        fivax::Fail POST SPINDLE "$what with the spindle stopped: the CL gives no speed (SPINDL)\
+            and the machine [dict get $fivax(machine) name] has no default_rpm"
     }
     fivax_spindle_start $speed
 }
@@ -498,7 +508,7 @@ proc fivax_first_move {} {
         circular_move - helix_move {
             global mom_prev_mcs_goto
             if {![info exists mom_prev_mcs_goto(2)]} {
-                error "an arc is the program's first motion: it has no start point\
+                fivax::Fail POST FIRST "an arc is the program's first motion: it has no start point\
                     (program a move to its start before it)"
             }
             fivax_motion feed [lmap i {0 1 2} {set mom_prev_mcs_goto($i)}]
@@ -579,8 +589,8 @@ proc fivax_again {kind} {
     fivax_settle
     if {![fivax::motion samePoint $here $P]} {return 0}
     if {$first eq "line" && $kind in {arc nurbs} && $event ni {rapid_move linear_move}} {
-        error "the operation's first motion came as a straight move to this point (mom_motion_event\
-            '$event'), then as MOM_[expr {$kind eq "arc" ? "circular" : "nurbs"}]_move:\
+        fivax::Fail POST FIRST "the operation's first motion came as a straight move to this\
+            point (mom_motion_event '$event'), then as MOM_[expr {$kind eq "arc" ? "circular" : "nurbs"}]_move:\
             the curve cannot be written (NX should name the motion in mom_motion_event)"
     }
     expr {$first eq $kind}
@@ -594,8 +604,9 @@ proc fivax_settle {} {
     lassign $fivax(first) first P event
     set fivax(first) {}
     if {$first eq "pending"} {
-        error "the cycle's first motion (to [join $P ", "]) named no hole (mom_motion_event\
-            '$event') and no hole event followed it there: the first hole cannot be placed"
+        fivax::Fail POST FIRST "the cycle's first motion (to [join $P ", "]) named no hole\
+            (mom_motion_event '$event') and no hole event followed it there: the first hole\
+            cannot be placed"
     }
 }
 
@@ -690,14 +701,15 @@ proc fivax_feed_zero {feed {what move}} {
     global fivax mom_programmed_feed_rate
     set programmed [expr {[info exists mom_programmed_feed_rate] ? $mom_programmed_feed_rate : $feed}]
     if {$programmed < 0 || $feed < 0} {
-        error "cutting move at the negative feed $programmed: program a feed above 0"
+        fivax::Fail POST FEED "cutting move at the negative feed $programmed: program a feed above 0"
     }
     if {$programmed != 0} {
-        error "cutting move at a feed of 0 mm/min (a feed of $programmed per revolution\
-            with the spindle stopped): start the spindle first"
+        fivax::Fail POST FEED "cutting move at a feed of 0 mm/min (a feed of $programmed per\
+            revolution with the spindle stopped): start the spindle first"
     }
     if {$what eq "arc"} {
-        error "arc at a programmed feed of 0 (rapid in NX): an arc has no rapid form, program a feed"
+        fivax::Fail POST FEED "arc at a programmed feed of 0 (rapid in NX): an arc has no rapid\
+            form, program a feed"
     }
     if {!$fivax(zeroFeed)} {
         set fivax(zeroFeed) 1
@@ -749,8 +761,8 @@ proc fivax_revs_seconds {revs} {
             || !($mom_spindle_speed >= 1)
             || ([info exists mom_spindle_status] && $mom_spindle_status eq "OFF")
             || ([info exists mom_spindle_mode] && $mom_spindle_mode ni {RPM ""})} {
-        error "a dwell of $revs spindle revolutions with no spindle speed in rpm in effect:\
-            program SPINDL/RPM before it, or the dwell in seconds"
+        fivax::Fail POST DWELL "a dwell of $revs spindle revolutions with no spindle speed in rpm\
+            in effect: program SPINDL/RPM before it, or the dwell in seconds"
     }
     expr {60.0 * $revs / $mom_spindle_speed}
 }

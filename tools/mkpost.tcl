@@ -2,7 +2,9 @@
 #	Writes one NX post per shipped machine: post/<machine>.tcl, a small
 #	wrapper that sets the machine and sources the shared post/fivax.tcl,
 #	and post/<machine>.def, the shared .def of the machine's dialect with
-#	the machine's name. Prints the template_post.dat line of each.
+#	the machine's name. Prints the template_post.dat line of every post:
+#	post/fivax.tcl itself (FIVAX: the machine of the settings), then each
+#	machine's (README.md lists them; a test checks it).
 #
 #	tclsh tools/mkpost.tcl ?-check?
 #	-check writes nothing and exits 1 when a post file differs from what
@@ -21,14 +23,21 @@ namespace eval ::mkpost {
     }
 }
 
+# ::mkpost::Line --
+#	Returns the template_post.dat line of the post post/name.tcl (name
+#	fivax: the shared post, FIVAX; else a machine's, FIVAX_<NAME>).
+proc ::mkpost::Line {name} {
+    set key [expr {$name eq "fivax" ? "FIVAX" : [string toupper FIVAX_$name]}]
+    return "$key,\${UGII_CAM_POST_DIR}fivax/post/$name.tcl,\${UGII_CAM_POST_DIR}fivax/post/$name.def"
+}
+
 # ::mkpost::Wrapper -- Returns the text of the wrapper post for machine name.
 proc ::mkpost::Wrapper {name} {
-    set key [string toupper FIVAX_$name]
-    return [string map [list @NAME@ $name @KEY@ $key] {# @NAME@.tcl -- fivax post for the machine @NAME@ (machines/@NAME@.tcl).
+    return [string map [list @NAME@ $name @LINE@ [Line $name]] {# @NAME@.tcl -- fivax post for the machine @NAME@ (machines/@NAME@.tcl).
 #	Written by tools/mkpost.tcl. Add settings to the list below (keys are
 #	the replay options with their dash, e.g. -tol 0.005 -on-limit error).
 #	NX template_post.dat line:
-#	@KEY@,${UGII_CAM_POST_DIR}fivax/post/@NAME@.tcl,${UGII_CAM_POST_DIR}fivax/post/@NAME@.def
+#	@LINE@
 set fivax_post_here [file dirname [file normalize [info script]]]
 set fivax_settings [list -machine [file join $fivax_post_here .. machines @NAME@.tcl]]
 source [file join $fivax_post_here fivax.tcl]
@@ -83,6 +92,7 @@ proc ::mkpost::main {argv} {
     }
     set base [Read [file join $root post fivax.def]]
     set stale {}
+    puts [Line fivax]
     foreach file [lsort [glob -directory [file join $root machines] *.tcl]] {
         set name [dict get [::fivax::machine load $file] name]
         foreach {path text} [list [file join $root post $name.tcl] [Wrapper $name] \
@@ -94,7 +104,7 @@ proc ::mkpost::main {argv} {
                 Write $path $text
             }
         }
-        puts "[string toupper FIVAX_$name],\${UGII_CAM_POST_DIR}fivax/post/$name.tcl,\${UGII_CAM_POST_DIR}fivax/post/$name.def"
+        puts [Line $name]
     }
     if {[llength $stale]} {
         puts stderr "mkpost: out of date: [join $stale {, }] (run tclsh tools/mkpost.tcl)"

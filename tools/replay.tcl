@@ -141,22 +141,14 @@ proc ::replay::CheckInput {clsf} {
 # ::replay::CheckMachine --
 #	Loads and checks the machine file of settings, its output settings
 #	(with the post's .def, as the post makes its output layer) and the
-#	settings that depend on them; returns the machine dict or dies.
+#	settings that depend on them (the post's check, fivax::settings
+#	output); returns the machine dict or dies.
 proc ::replay::CheckMachine {settings} {
     variable root
     set file [dict get $settings -machine]
     try {
         set machine [::fivax::machine load $file]
-        set options [list -def [::fivax::def load [file join $root post fivax.def]]]
-        foreach key {-controller -tcp} {
-            if {[dict get $settings $key] ne ""} {
-                lappend options $key [dict get $settings $key]
-            }
-        }
-        set out [::fivax::output create $machine {*}$options]
-        set resolution [$out resolution]
-        $out destroy
-        ::fivax::settings check $settings $machine $resolution replay
+        [::fivax::settings output $settings $machine [file join $root post fivax.def] replay] destroy
     } trap {FIVAX MACHINE NOFILE} {} {
         Die "$file: machine file not found"
     } trap {FIVAX} {msg} {
@@ -532,15 +524,12 @@ proc ::replay::Summary {stats} {
 #	Checks the command line, the machine file and the output path, posts
 #	the file through the sink, and puts the output in place.
 proc ::replay::main {argv} {
-    variable root
     variable R
     variable bufferSize
     Reset
     lassign [ParseArgs $argv] opts clsf
-    set settings [dict filter $opts key {*}[::fivax::opts names [::fivax::settings table]]]
-    if {[dict get $settings -machine] eq ""} {
-        dict set settings -machine [file join $root machines hh-tilt45.tcl]
-    }
+    set settings [::fivax::settings complete \
+        [dict filter $opts key {*}[::fivax::opts names [::fivax::settings table]]]]
     set machineFile [dict get $settings -machine]
     CheckInput $clsf
     set target ""
