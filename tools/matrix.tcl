@@ -5,7 +5,7 @@
 #	with tools/verify.tcl (forward kinematics against the CL path and the
 #	machine dry run: spindle, rapids into the stock, tool, holder and
 #	spindle nose, length compensation, program end, unreadable words).
-#	(-verify 0: the post's own dry run only, which reads the written text
+#	(-verify off: the post's own dry run only, which reads the written text
 #	with the verify reader too.)
 #	A case passes when the program is posted and verified with no event,
 #	or when replay refuses the job with one clean FILE:LINE message that
@@ -32,7 +32,7 @@ namespace eval ::matrixtool {
         {-workplane text {auto off} "VALUES" "work-plane settings"}
         {-tool-length {maybe real gt 0} 100 MM "tool length for CL files without one (replay -tool-length; empty: not given)"}
         {-default-rpm {maybe real gt 0} 10000 RPM "default_rpm of the machines that have none, for CL files without a spindle speed (empty: the machine files as they are)"}
-        {-verify bool 1 "" "read each posted program back with tools/verify.tcl (forward kinematics against the CL, and its own dry run); 0: the post's dry run of its own output only"}
+        {-verify {enum on off} on WHEN "read each posted program back with tools/verify.tcl (forward kinematics against the CL, and its own dry run); off: the post's dry run of its own output only"}
         {-jobs {int min 1} 2 N "cases run at once"}
         {-dir text {} DIR "work directory for the programs (default: a temporary one, removed at the end)"}
         {-verbose bool 0 "" "print one line per case"}
@@ -153,7 +153,7 @@ proc ::matrixtool::Readable {opts chan} {
     if {[dict get $job step] eq "replay"} {
         if {$code} {
             Result $opts $case [Refusal $out] $out
-        } elseif {![dict get $opts -verify]} {
+        } elseif {[dict get $opts -verify] eq "off"} {
             Result $opts $case passed $out
         } else {
             Spawn $opts $case verify [VerifyArgs $opts $case [dict get $case nc]]
