@@ -1003,6 +1003,7 @@ proc ::fivax::dryrun::Lowered {ci cj n} {
 #	across the axis a-b.
 proc ::fivax::dryrun::Lower {a b r} {
     variable R
+    upvar 0 R(H) H
     lassign $a x y z
     if {$z - $r >= $R(top)} return
     set slope [Slope $a $b]
@@ -1012,11 +1013,18 @@ proc ::fivax::dryrun::Lower {a b r} {
     Lowered $ci $cj $n
     set k0 [expr {$cj * $R(nx) + $ci}]
     if {$ci >= $n && $cj >= $n && $ci + $n < $R(nx) && $cj + $n < $R(ny)} {
-        # (inside the map: no cell to skip)
+        # (inside the map: no cell to skip; a vertical tool's disc is flat)
+        if {$slope == 0} {
+            foreach {- - - off} [lrange $stencil 1 end] {
+                set k [expr {$k0 + $off}]
+                if {[lindex $H $k] > $z} {lset H $k $z}
+            }
+            return
+        }
         foreach {- - d off} [lrange $stencil 1 end] {
             set k [expr {$k0 + $off}]
             set low [expr {$z - min($r, $d * $slope)}]
-            if {[lindex $R(H) $k] > $low} {lset R(H) $k $low}
+            if {[lindex $H $k] > $low} {lset H $k $low}
         }
         return
     }
@@ -1026,7 +1034,7 @@ proc ::fivax::dryrun::Lower {a b r} {
         if {$i < 0 || $j < 0 || $i >= $R(nx) || $j >= $R(ny)} continue
         set k [expr {$j * $R(nx) + $i}]
         set low [expr {$z - min($r, $d * $slope)}]
-        if {[lindex $R(H) $k] > $low} {lset R(H) $k $low}
+        if {[lindex $H $k] > $low} {lset H $k $low}
     }
 }
 
