@@ -38,6 +38,9 @@ namespace eval ::matrixtool {
         {-verbose bool 0 "" "print one line per case"}
         {-help bool 0 "" "print this help"}
     }
+    # The block check's tolerances with -verify off, mm and deg (as
+    # tools/verify.tcl's defaults).
+    variable tolerances {0.01 0.05}
     # S: cases (to run), running (channel -> case), results, root, dir
     variable S
 }
@@ -99,8 +102,9 @@ proc ::matrixtool::Cases {opts files machines} {
 # ::matrixtool::ReplayArgs -- Returns replay's command line for case (program to nc).
 proc ::matrixtool::ReplayArgs {opts case nc} {
     variable S
-    set args [list [info nameofexecutable] [file join $S(root) tools replay.tcl] -quiet \
-        -machine [dict get $case machine] -controller [dict get $case controller] \
+    # (-verify off: the post's summary tells its own block check)
+    set args [list [info nameofexecutable] [file join $S(root) tools replay.tcl] \
+        {*}[expr {[dict get $opts -verify] eq "on" ? "-quiet" : ""}] -machine [dict get $case machine] -controller [dict get $case controller] \
         -tcp [dict get $case tcp] -workplane [dict get $case workplane] \
         -o $nc]
     if {[dict get $opts -tool-length] ne ""} {lappend args -tool-length [dict get $opts -tool-length]}
@@ -154,7 +158,7 @@ proc ::matrixtool::Readable {opts chan} {
         if {$code} {
             Result $opts $case [Refusal $out] $out
         } elseif {[dict get $opts -verify] eq "off"} {
-            Result $opts $case passed $out
+            Result $opts $case [PostChecks $out] $out
         } else {
             Spawn $opts $case verify [VerifyArgs $opts $case [dict get $case nc]]
         }
@@ -175,6 +179,23 @@ proc ::matrixtool::Refusal {out} {
     # the machine cannot take (TCP on linuxcnc without tcp_codes)
     if {[regexp {^\S+:\d+: |^\S+\.tcl: } $last]} {return refused}
     return failed
+}
+
+# ::matrixtool::PostChecks --
+#	Returns passed when the summary out of a replay that exited 0 reports
+#	its block check (forward kinematics of the written blocks at their
+#	ends and quarter points) within verify's tolerances and no rotary
+#	value outside its limits, else failed.
+proc ::matrixtool::PostChecks {out} {
+    variable tolerances
+    lassign $tolerances mm deg
+    set found 0
+    foreach {- dist ang} [regexp -all -inline {max deviation ([0-9.]+) mm, ([0-9.]+) deg} $out] {
+        if {$dist > $mm || $ang > $deg} {return failed}
+        incr found
+    }
+    if {$found != 2 || ![regexp {; 0 rotary values outside limits} $out]} {return failed}
+    return passed
 }
 
 # ::matrixtool::Result -- Records case's result (passed, refused, failed) with output out.
