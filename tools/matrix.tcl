@@ -51,12 +51,21 @@ proc ::matrixtool::DefaultFiles {root} {
     lappend files {*}[lsort [glob -nocomplain -directory [::fivax::corpusDir $root] *.cls]]
 }
 
-# ::matrixtool::HasMsys -- Returns 1 when the CL file has an MSYS record.
-proc ::matrixtool::HasMsys {path} {
+# ::matrixtool::NeedsMsys --
+#	Returns 1 when the CL file is posted in its MSYS frame (-msys): it has
+#	an MSYS record and its first tool axis points down (the NX five-axis
+#	files: their MCS's Z is the machine's -Z); NX files whose first axis
+#	points up are in the machine's frame as they are.
+proc ::matrixtool::NeedsMsys {path} {
     set chan [::fivax::nctool open $path]
+    set msys 0
     try {
         while {[gets $chan line] >= 0} {
-            if {[regexp {^\s*MSYS\s*/} $line]} {return 1}
+            if {[regexp {^\s*MSYS\s*/} $line]} {set msys 1}
+            set n {[-+]?[0-9.]+(?:[eE][-+]?\d+)?}
+            if {[regexp "^\\s*GOTO\\s*/(?:\\s*$n\\s*,){5}\\s*($n)" $line -> k]} {
+                return [expr {$msys && $k < 0}]
+            }
         }
     } finally {
         close $chan
@@ -83,7 +92,7 @@ proc ::matrixtool::WithRpm {path rpm dir} {
 proc ::matrixtool::Cases {opts files machines} {
     set cases {}
     foreach cl $files {
-        set msys [HasMsys $cl]
+        set msys [NeedsMsys $cl]
         foreach m $machines {
             foreach c [dict get $opts -controllers] {
                 foreach t [dict get $opts -tcp] {
