@@ -21,6 +21,7 @@
 namespace eval ::fivax::clsf {
     namespace export open channel parse progress ends
     namespace ensemble create -prefixes 0
+    namespace upvar ::fivax::num reach reach
 }
 
 # ::fivax::clsf::open --
@@ -429,6 +430,7 @@ proc ::fivax::clsf::parse {text file line} {
             if {$y eq ""} {BadNumber $b $file $line $major}
             set z [::fivax::num::parse $c]
             if {$z eq ""} {BadNumber $c $file $line $major}
+            Reach [list $x $y $z] $file $line $major
             set axis {}
             if {$cnt == 6} {set axis [Axis $i $j $k $file $line $major "tool axis"]}
             return [dict create kind $major file $file line $line \
@@ -487,12 +489,26 @@ proc ::fivax::clsf::PlainGoto {text file line} {
     } else {
         return {}
     }
-    # (finite: between the infinities; abs() is a command call in expr)
-    if {$end != [string length $text]
-            || !($x < Inf && $x > -Inf && $y < Inf && $y > -Inf && $z < Inf && $z > -Inf)} {
+    # (within reach, so finite; abs() is a command call in expr)
+    variable reach
+    if {$end != [string length $text] || !($x <= $reach && $x >= -$reach
+            && $y <= $reach && $y >= -$reach && $z <= $reach && $z >= -$reach)} {
         return {}
     }
     dict create kind GOTO file $file line $line point [list $x $y $z] axis $axis
+}
+
+# ::fivax::clsf::Reach --
+#	Raises RANGE when a coordinate of point lies beyond reach (no machine
+#	goes there; the planner's sums would overflow).
+proc ::fivax::clsf::Reach {point file line major} {
+    variable reach
+    foreach c $point axis {X Y Z} {
+        if {!(abs($c) <= $reach)} {
+            ::fivax::Fail CLSF RANGE "$file:$line: $major: $axis [::format %g $c] lies beyond\
+                [::format %g $reach] mm of the origin (no machine reaches it)"
+        }
+    }
 }
 
 # ::fivax::clsf::Tokens -- Returns the trimmed comma-separated tokens of rest.

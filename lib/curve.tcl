@@ -13,11 +13,7 @@
 namespace eval ::fivax::curve {
     namespace export arc arcSplit arcLength radius nurbs nurbsAt nurbsPoints nurbsSamples clsfNurbs
     namespace ensemble create -prefixes 0
-    namespace upvar ::fivax::num pi pi
-    # The largest size (mm) of a curve point's coordinates (arc points,
-    # NURBS control points): no machine reaches farther, and squared
-    # distances stay far from overflow (CL values go up to 1.8e308).
-    variable reach 1e9
+    namespace upvar ::fivax::num pi pi reach reach
 }
 
 # ::fivax::curve::arc --

@@ -905,7 +905,7 @@ oo::class create ::fivax::mom::Runtime {
         foreach p [list $start $end] what {start end} {
             set r [::fivax::curve::radius $p $center $axis]
             # (a point beyond the curve's reach is the arc's own error)
-            if {!($r <= $::fivax::curve::reach)} continue
+            if {!($r <= $::fivax::num::reach)} continue
             if {!(abs($r - $radius) <= $tol)} {
                 ::fivax::Fail MOM ARC [::format "%s: CIRCLE: the arc's %s lies %.4f mm from its axis,\
                     its radius is %g mm" [::fivax::mom::Where $circle] $what $r $radius]

@@ -10,6 +10,11 @@ namespace eval ::fivax::num {
     # The double nearest pi (equal to acos(-1.0)); modules link to it with
     # [namespace upvar ::fivax::num pi pi].
     variable pi 3.141592653589793
+    # The largest size (mm) of a CL point's coordinates (GOTO points, arc
+    # centres, NURBS control points): no machine reaches farther, and
+    # squared distances stay far from overflow (CL values go up to
+    # 1.8e308); modules link to it as to pi.
+    variable reach 1e9
 }
 
 # ::fivax::num::parse --
