@@ -261,8 +261,8 @@ oo::class create ::fivax::output::Writer {
     # The state is one array S (one declared variable: TclOO resolves every
     # local of a method against each declared name on every call). S(nc):
     # the block Writer; S(cfg): options; S(dialect): its table entry;
-    # S(rotaries): {name chainIndex rollover} in output order (the 4th
-    # axis word first); S(length): the H register to activate with the
+    # S(rotaries): {name chainIndex rollover}, the 4th axis (address
+    # fourth_axis) first; S(length): the H register to activate with the
     # next Z move (0: none); S(tcpArmed): 1 when TCP comes on with the
     # next block that writes Z; S(tcpOn): TCP is active; S(loaded): a
     # tool has been changed in; S(home): the rotaries stand at 0 (known
@@ -282,7 +282,8 @@ oo::class create ::fivax::output::Writer {
     # feed moves, G-code syntax), S(klartext) (the dialect's
     # syntax is Klartext), S(tcpInBlock) (TCP comes on inside a motion
     # block: Fanuc G43.4 H), S(xyzAddr) {X addr Y addr Z addr} and
-    # S(rotAddr) {name addr step ...} (the rotaries in output order; step:
+    # S(rotAddr) {name addr step ...} (the rotaries in the order of their
+    # words, see AxisAddresses; step:
     # the output resolution in degrees a rotary that rolls over is rounded
     # to, "" for one that does not): the addresses of the axes in the
     # dialect.
@@ -322,7 +323,7 @@ oo::class create ::fivax::output::Writer {
         set S(tcpInBlock) [expr {$tcp ne "" && [dict get $tcp on] eq "G43.4"}]
         set S(nc) [::fivax::nc::create -sequence 0 -warn [dict get $S(cfg) -warn]]
         my Define [dict get $S(cfg) -def]
-        my AxisAddresses
+        my AxisAddresses [dict get $S(cfg) -def]
     }
 
     destructor {
@@ -377,15 +378,29 @@ oo::class create ::fivax::output::Writer {
         dict get $S(codes) $name
     }
 
-    # Sets S(xyzAddr) and S(rotAddr) (see the state) from the dialect and
-    # the formats of the rotary addresses.
-    method AxisAddresses {} {
+    # Sets S(xyzAddr) and S(rotAddr) (see the state) from the dialect, the
+    # formats of the rotary addresses and the word order of the .def def.
+    method AxisAddresses {def} {
         set prefix [expr {$S(klartext) ? "K" : ""}]
         set S(xyzAddr) [list X ${prefix}X Y ${prefix}Y Z ${prefix}Z]
         set S(rotAddr) {}
         foreach r $S(rotaries) addr [expr {$S(klartext) ? {K4 K5} : {fourth_axis fifth_axis}}] {
             lassign $r name - roll
             lappend S(rotAddr) $name $addr [expr {$roll ? 10.0 ** -[$S(nc) decimals $addr] : ""}]
+        }
+        # the rotary words in the order of the .def's linear_move template,
+        # as NX writes a block: fifth_axis before fourth_axis there puts
+        # the fifth axis's word first
+        set order {}
+        if {[dict exists $def blocks linear_move]} {
+            set order [lmap word [dict get $def blocks linear_move] {
+                if {![dict exists $word address]} continue
+                dict get $word address
+            }]
+        }
+        set fifth [lsearch -exact $order fifth_axis]
+        if {$fifth >= 0 && $fifth < [lsearch -exact $order fourth_axis]} {
+            set S(rotAddr) [concat [lrange $S(rotAddr) 3 5] [lrange $S(rotAddr) 0 2]]
         }
     }
 
@@ -516,8 +531,8 @@ oo::class create ::fivax::output::Writer {
     # nearest to it when 0 is outside the limits (never a value outside).
     method Home {} {
         set home {}
-        foreach r $S(rotaries) addr [expr {$S(klartext) ? {K4 K5} : {fourth_axis fifth_axis}}] {
-            lassign [dict get $S(machine) limits [lindex $r 0]] lo hi
+        foreach {name addr -} $S(rotAddr) {
+            lassign [dict get $S(machine) limits $name] lo hi
             lappend home $addr [::fivax::num::deg [expr {min(max(0.0, $lo), $hi)}]]
         }
         return $home
