@@ -511,10 +511,11 @@ proc ::replay::Runtime {postFile defFile given args} {
 #	Returns the settings the post postFile (.def defFile) posts with, the
 #	settings given on top (see Runtime), as the post assembles them when
 #	it loads; dies with the post's message when it stops loading, or when
-#	it is no fivax post.
+#	it is no fivax post. (The post loads without the -log given: a post
+#	that stops loading writes its log, and that file is not checked yet.)
 proc ::replay::PostSettings {postFile defFile given} {
     try {
-        set rt [Runtime $postFile $defFile $given]
+        set rt [Runtime $postFile $defFile [dict remove $given -log]]
     } trap {FIVAX} {msg} {
         Die $msg
     } on error {msg} {
@@ -525,7 +526,8 @@ proc ::replay::PostSettings {postFile defFile given} {
         if {![$child eval {info exists ::fivax(settings)}]} {
             Die "replay: -post $postFile: no fivax post (it sets no fivax(settings))"
         }
-        $child eval {set ::fivax(settings)}
+        set settings [$child eval {set ::fivax(settings)}]
+        dict merge $settings [dict filter $given key -log]
     } finally {
         $rt destroy
     }
