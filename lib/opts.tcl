@@ -30,7 +30,7 @@
 #	the option, e.g. bad -tol "abc": must be a number >= 0.
 
 namespace eval ::fivax::opts {
-    namespace export parse argv help check names drop
+    namespace export parse argv given help check names drop
     namespace ensemble create -prefixes 0
 }
 
@@ -60,7 +60,15 @@ proc ::fivax::opts::parse {table argList {who ""}} {
 #	defaults for those not given, and the words after the options (after
 #	"--" or the first word that does not start with "-").
 proc ::fivax::opts::argv {table words {who ""}} {
-    set out [Defaults $table]
+    lassign [given $table $words $who] out rest
+    list [dict merge [Defaults $table] $out] $rest
+}
+
+# ::fivax::opts::given --
+#	Returns {dict rest} as argv does, the dict holding only the options
+#	the words give (for settings added on top of others).
+proc ::fivax::opts::given {table words {who ""}} {
+    set out [dict create]
     set i 0
     set n [llength $words]
     while {$i < $n} {

@@ -24,7 +24,7 @@
 #	Errors: {FIVAX OPTION ...}, {FIVAX OUTPUT <DETAIL>}.
 
 namespace eval ::fivax::output {
-    namespace export create
+    namespace export create sysVars
     namespace ensemble create -prefixes 0
 
     variable Options {
@@ -144,6 +144,23 @@ namespace eval ::fivax::output {
     }
     # The angle convention of each work-plane form (see lib/plane.tcl).
     variable PlaneAngles {g68.2 zxz cycle800 xyz spatial spatial}
+    # The G and M codes the layer writes, by the name Post Builder posts
+    # keep them under (the variable mom_sys_<name>, which the templates of
+    # a .def read; see sysVars): gcode those only the G-code syntax writes
+    # (Klartext has no G codes, a TOOL CALL for M6, STOP for M0), any
+    # those every dialect writes (Klartext in L blocks). The methods look
+    # them up here (Code).
+    variable Codes {
+        gcode {
+            rapid_code 0 linear_code 1 circle_code(CLW) 2 circle_code(CCLW) 3
+            output_code(ABSOLUTE) 90 tool_change_code 6 program_stop_code 0
+        }
+        any {
+            optional_stop_code 1 spindle_direction_code(CLW) 3 spindle_direction_code(CCLW) 4
+            spindle_direction_code(OFF) 5 coolant_code(MIST) 7 coolant_code(ON) 8
+            coolant_code(FLOOD) 8 coolant_code(OFF) 9 end_of_program_code 30
+        }
+    }
 }
 
 # ::fivax::output::create --
@@ -170,12 +187,7 @@ proc ::fivax::output::create {machine args} {
         }
         lappend fromMachine $opt $value
     }
-    set controller [dict get $machine controller]
-    if {![dict exists $::fivax::output::Dialects $controller]} {
-        ::fivax::Fail OUTPUT VALUE "$src: controller: unknown dialect '$controller': must be\
-            [join [dict keys $::fivax::output::Dialects] {, }]"
-    }
-    lappend fromMachine -controller $controller -tcp [dict get $machine tcp]
+    lappend fromMachine -controller [MachineController $machine] -tcp [dict get $machine tcp]
     set opts [::fivax::opts::parse $Options [concat $fromMachine $args] "output create"]
     if {![dict size [dict get $opts -def]]} {
         ::fivax::Fail OPTION MISSING "output create: -def (the post's .def) is required"
@@ -189,12 +201,68 @@ proc ::fivax::output::create {machine args} {
     Writer new $machine $opts
 }
 
+# ::fivax::output::sysVars --
+#	Returns the mom_sys_* variables a .def's LEADERs and BLOCK_TEMPLATEs
+#	read, with the values the output layer for machine writes in the
+#	dialect controller ("": the machine's): {name value ...}, array
+#	elements named name(key). mom_sys_leader(NAME) for X Y Z N
+#	fourth_axis fifth_axis (see Leaders), and mom_sys_<code> for each
+#	code of the Codes table the dialect writes (mom_sys_rapid_code 0,
+#	mom_sys_spindle_direction_code(CLW) 3 ...). The post sets them as
+#	globals, so that a shop's own block in the .def (NX's
+#	MOM_do_template) writes the words the post writes.
+#	Errors: {FIVAX OUTPUT VALUE} for a machine's unknown dialect.
+proc ::fivax::output::sysVars {machine {controller ""}} {
+    set fromMachine [MachineController $machine]
+    if {$controller eq ""} {set controller $fromMachine}
+    set klartext [expr {[dict get $::fivax::output::Dialects $controller syntax] eq "klartext"}]
+    set vars {}
+    dict for {name leader} [Leaders $machine $klartext] {
+        lappend vars mom_sys_leader($name) $leader
+    }
+    dict for {name code} [CodesOf $klartext] {
+        lappend vars mom_sys_$name $code
+    }
+    return $vars
+}
+
+# ::fivax::output::MachineController --
+#	Returns the dialect named by machine's controller key.
+#	Errors: {FIVAX OUTPUT VALUE} "<file>: controller: unknown dialect ..."
+proc ::fivax::output::MachineController {machine} {
+    set controller [dict get $machine controller]
+    if {![dict exists $::fivax::output::Dialects $controller]} {
+        ::fivax::Fail OUTPUT VALUE "[dict get $machine file]: controller: unknown dialect\
+            '$controller': must be [join [dict keys $::fivax::output::Dialects] {, }]"
+    }
+    return $controller
+}
+
+# ::fivax::output::Leaders --
+#	Returns the leader of each word a .def's [$mom_sys_leader(NAME)] may
+#	name, by NAME: X Y Z, N (none in Klartext: klartext 1), and
+#	fourth_axis, fifth_axis, the letters of machine's rotaries in output
+#	order (the fourth axis word first).
+proc ::fivax::output::Leaders {machine klartext} {
+    lassign [::fivax::machine::rotaryNames $machine] r4 r5
+    dict create X X Y Y Z Z N [expr {$klartext ? "" : "N"}] fourth_axis $r4 fifth_axis $r5
+}
+
+# ::fivax::output::CodesOf --
+#	Returns the codes of the Codes table a dialect writes, by name: those
+#	of every dialect, and those of the G-code syntax unless klartext is 1.
+proc ::fivax::output::CodesOf {klartext} {
+    variable Codes
+    if {$klartext} {return [dict get $Codes any]}
+    dict merge [dict get $Codes gcode] [dict get $Codes any]
+}
+
 oo::class create ::fivax::output::Writer {
     # The state is one array S (one declared variable: TclOO resolves every
     # local of a method against each declared name on every call). S(nc):
     # the block Writer; S(cfg): options; S(dialect): its table entry;
-    # S(rotaries): {name chainIndex rollover} in output order (the 4th
-    # axis word first); S(length): the H register to activate with the
+    # S(rotaries): {name chainIndex rollover}, the 4th axis (address
+    # fourth_axis) first; S(length): the H register to activate with the
     # next Z move (0: none); S(tcpArmed): 1 when TCP comes on with the
     # next block that writes Z; S(tcpOn): TCP is active; S(loaded): a
     # tool has been changed in; S(home): the rotaries stand at 0 (known
@@ -209,10 +277,13 @@ oo::class create ::fivax::output::Writer {
     # After G80 Z and the motion code are
     # written again: the tool stands at the initial level, and the motion
     # mode is stated afresh.
-    # Fixed per writer, for the per-point path: S(klartext) (the dialect's
+    # Fixed per writer: S(codes) (the Codes the dialect writes, see Code)
+    # and, for the per-point path, S(moveCodes) (the G codes of rapid and
+    # feed moves, G-code syntax), S(klartext) (the dialect's
     # syntax is Klartext), S(tcpInBlock) (TCP comes on inside a motion
     # block: Fanuc G43.4 H), S(xyzAddr) {X addr Y addr Z addr} and
-    # S(rotAddr) {name addr step ...} (the rotaries in output order; step:
+    # S(rotAddr) {name addr step ...} (the rotaries in the order of their
+    # words, see AxisAddresses; step:
     # the output resolution in degrees a rotary that rolls over is rounded
     # to, "" for one that does not): the addresses of the axes in the
     # dialect.
@@ -244,11 +315,15 @@ oo::class create ::fivax::output::Writer {
         set S(atSafe) 0
         set S(program) PART
         set S(klartext) [expr {[dict get $S(dialect) syntax] eq "klartext"}]
+        set S(codes) [::fivax::output::CodesOf $S(klartext)]
+        if {!$S(klartext)} {
+            set S(moveCodes) [list [my Code rapid_code] [my Code linear_code]]
+        }
         set tcp [dict get $S(dialect) tcp]
         set S(tcpInBlock) [expr {$tcp ne "" && [dict get $tcp on] eq "G43.4"}]
         set S(nc) [::fivax::nc::create -sequence 0 -warn [dict get $S(cfg) -warn]]
         my Define [dict get $S(cfg) -def]
-        my AxisAddresses
+        my AxisAddresses [dict get $S(cfg) -def]
     }
 
     destructor {
@@ -265,8 +340,7 @@ oo::class create ::fivax::output::Writer {
                 ::fivax::Fail OUTPUT DEF "the post's .def has no ADDRESS $name"
             }
         }
-        lassign [lmap r $S(rotaries) {lindex $r 0}] r4 r5
-        set leaders [dict create X X Y Y Z Z N N fourth_axis $r4 fifth_axis $r5]
+        set leaders [::fivax::output::Leaders $S(machine) $S(klartext)]
         dict for {name a} [dict get $def addresses] {
             if {[dict get $a leader_expr] eq ""} continue
             if {![regexp {^\s*\$mom_sys_leader\((\w+)\)\s*$} [dict get $a leader_expr] -> key]
@@ -299,15 +373,34 @@ oo::class create ::fivax::output::Writer {
         }
     }
 
-    # Sets S(xyzAddr) and S(rotAddr) (see the state) from the dialect and
-    # the formats of the rotary addresses.
-    method AxisAddresses {} {
+    # Returns the code called name in the Codes table (rapid_code ...).
+    method Code {name} {
+        dict get $S(codes) $name
+    }
+
+    # Sets S(xyzAddr) and S(rotAddr) (see the state) from the dialect, the
+    # formats of the rotary addresses and the word order of the .def def.
+    method AxisAddresses {def} {
         set prefix [expr {$S(klartext) ? "K" : ""}]
         set S(xyzAddr) [list X ${prefix}X Y ${prefix}Y Z ${prefix}Z]
         set S(rotAddr) {}
         foreach r $S(rotaries) addr [expr {$S(klartext) ? {K4 K5} : {fourth_axis fifth_axis}}] {
             lassign $r name - roll
             lappend S(rotAddr) $name $addr [expr {$roll ? 10.0 ** -[$S(nc) decimals $addr] : ""}]
+        }
+        # the rotary words in the order of the .def's linear_move template,
+        # as NX writes a block: fifth_axis before fourth_axis there puts
+        # the fifth axis's word first
+        set order {}
+        if {[dict exists $def blocks linear_move]} {
+            set order [lmap word [dict get $def blocks linear_move] {
+                if {![dict exists $word address]} continue
+                dict get $word address
+            }]
+        }
+        set fifth [lsearch -exact $order fifth_axis]
+        if {$fifth >= 0 && $fifth < [lsearch -exact $order fourth_axis]} {
+            set S(rotAddr) [concat [lrange $S(rotAddr) 3 5] [lrange $S(rotAddr) 0 2]]
         }
     }
 
@@ -366,7 +459,8 @@ oo::class create ::fivax::output::Writer {
             lappend lines [$S(nc) block [dict get $S(dialect) safety]]
         }
         lappend lines {*}[my Resets]
-        lappend lines [$S(nc) block [list G_units $unit G_mode 90 G_feed 94 G_plane 17]] \
+        set modes [list G_units $unit G_mode [my Code output_code(ABSOLUTE)] G_feed 94 G_plane 17]
+        lappend lines [$S(nc) block $modes] \
             [$S(nc) block [list G_wcs [dict get $S(machine) work_offset]]]
     }
 
@@ -409,7 +503,7 @@ oo::class create ::fivax::output::Writer {
         if {$length eq "call"} {
             set S(pendingTool) $number
         } else {
-            lappend lines [$S(nc) block [list T $number M 6]]
+            lappend lines [$S(nc) block [list T $number M [my Code tool_change_code]]]
         }
         $S(nc) reset
         set S(home) 1
@@ -437,8 +531,8 @@ oo::class create ::fivax::output::Writer {
     # nearest to it when 0 is outside the limits (never a value outside).
     method Home {} {
         set home {}
-        foreach r $S(rotaries) addr [expr {$S(klartext) ? {K4 K5} : {fourth_axis fifth_axis}}] {
-            lassign [dict get $S(machine) limits [lindex $r 0]] lo hi
+        foreach {name addr -} $S(rotAddr) {
+            lassign [dict get $S(machine) limits $name] lo hi
             lappend home $addr [::fivax::num::deg [expr {min(max(0.0, $lo), $hi)}]]
         }
         return $home
@@ -450,7 +544,7 @@ oo::class create ::fivax::output::Writer {
         $S(nc) force once [dict keys $home]
         if {$S(klartext)} {return [list [$S(nc) block $home 1 {"L " " R0 FMAX"}]]}
         $S(nc) force once G_motion
-        list [$S(nc) block [list G_motion 0 {*}$home]]
+        list [$S(nc) block [list G_motion [my Code rapid_code] {*}$home]]
     }
 
     # Returns the words that switch the armed length compensation on in a
@@ -480,11 +574,11 @@ oo::class create ::fivax::output::Writer {
                 $S(nc) force once {G_motion Z}
                 # (Fanuc's TCP off is G49 in a block of its own)
                 set g49 [expr {[llength $off] && [dict get $S(dialect) tcp] ne "" ? {} : {G_length 49}}]
-                lappend lines [$S(nc) block [list G_motion 0 {*}$g49 G_machine 53 Z $z]]
+                lappend lines [$S(nc) block [list G_motion [my Code rapid_code] {*}$g49 G_machine 53 Z $z]]
             }
             SUPA {
                 $S(nc) force once {G_motion Z}
-                lappend lines [$S(nc) block [list G_motion 0 "" SUPA Z $z D 0]]
+                lappend lines [$S(nc) block [list G_motion [my Code rapid_code] "" SUPA Z $z D 0]]
             }
             M91 {
                 $S(nc) force once KZ
@@ -502,7 +596,7 @@ oo::class create ::fivax::output::Writer {
     # A start (the spindle not turning that way) writes S too, even when
     # it is in effect already.
     method spindle {speed direction} {
-        set m [expr {$direction eq "CCLW" ? 4 : 3}]
+        set m [my Code spindle_direction_code([expr {$direction eq "CCLW" ? "CCLW" : "CLW"}])]
         set speed [expr {round($speed)}]
         if {$S(klartext)} {
             # the S of TOOL CALL is text: the .def's MIN/MAX of S bound it here
@@ -517,29 +611,33 @@ oo::class create ::fivax::output::Writer {
 
     # Returns the spindle-off block.
     method spindleOff {} {
-        if {$S(klartext)} {return [my KlartextM {M_spindle 5}]}
-        concat [my CycleOff] [list [$S(nc) block {M_spindle 5}]]
+        set words [list M_spindle [my Code spindle_direction_code(OFF)]]
+        if {$S(klartext)} {return [my KlartextM $words]}
+        concat [my CycleOff] [list [$S(nc) block $words]]
     }
 
-    # Returns the coolant-on block for mode (MIST: M7, else M8).
+    # Returns the coolant-on block for mode (MIST: M7, FLOOD and any
+    # other: M8).
     method coolant {mode} {
-        set m [expr {$mode eq "MIST" ? 7 : 8}]
+        set m [my Code coolant_code([expr {$mode eq "MIST" ? "MIST" : "ON"}])]
         if {$S(klartext)} {return [my KlartextM [list M_coolant $m]]}
         list [$S(nc) block [list M_coolant $m]]
     }
 
     # Returns the coolant-off block.
     method coolantOff {} {
-        if {$S(klartext)} {return [my KlartextM {M_coolant 9}]}
-        list [$S(nc) block {M_coolant 9}]
+        set words [list M_coolant [my Code coolant_code(OFF)]]
+        if {$S(klartext)} {return [my KlartextM $words]}
+        list [$S(nc) block $words]
     }
 
     # Returns the program stop block (optional: M1, else M0; Klartext STOP).
     method stop {optional} {
         if {$S(klartext)} {
-            return [list [$S(nc) line [expr {$optional ? "L M1" : "STOP"}]]]
+            return [list [$S(nc) line [expr {$optional ? "L M[my Code optional_stop_code]" : "STOP"}]]]
         }
-        concat [my CycleOff] [list [$S(nc) block [list M [expr {$optional ? 1 : 0}]]]]
+        set code [my Code [expr {$optional ? "optional_stop_code" : "program_stop_code"}]]
+        concat [my CycleOff] [list [$S(nc) block [list M $code]]]
     }
 
     # Returns the dwell blocks for seconds (G4 P or F in the dialect's
@@ -755,7 +853,7 @@ oo::class create ::fivax::output::Writer {
             lappend lines [$S(nc) block $words 1 [list "L " " $tail"]]
             return $lines
         }
-        set words [list G_motion $isFeed]
+        set words [list G_motion [lindex $S(moveCodes) $isFeed]]
         if {$S(tcpArmed) && $S(tcpInBlock) && "Z" in $write} {
             # TCP on (Fanuc): G43.4 H with the first Z block (the
             # approach's X Y Z, see ::fivax::motion First)
@@ -832,7 +930,7 @@ oo::class create ::fivax::output::Writer {
         set offsets [dict get {17 {I J} 18 {I K} 19 {J K}} $plane]
         # centre offsets from the start as written (rounded)
         set d [$S(nc) decimals X]
-        set words [list G_plane $plane G_motion $dir]
+        set words [list G_plane $plane G_motion [my Code circle_code([expr {$dir == 2 ? "CLW" : "CCLW"}])]]
         set S(arcPlane) $plane
         if {$S(feedMode) eq "inverse"} {
             lappend words G_feed 94
@@ -932,13 +1030,16 @@ oo::class create ::fivax::output::Writer {
     method end {} {
         set lines [concat [my PlaneOff] [my safeZ]]
         if {[dict get $S(machine) home_rotaries]} {lappend lines {*}[my HomeRotaries]}
+        set off [list M_spindle [my Code spindle_direction_code(OFF)] \
+            M_coolant [my Code coolant_code(OFF)]]
+        set end M[my Code end_of_program_code]
         if {$S(klartext)} {
             lassign [dict get $S(dialect) units] mm inch
             set unit [expr {[dict get $S(machine) units] eq "inch" ? $inch : $mm}]
-            return [concat $lines [my KlartextM {M_spindle 5 M_coolant 9}] [list [$S(nc) line "L M30"] \
+            return [concat $lines [my KlartextM $off] [list [$S(nc) line "L $end"] \
                 [$S(nc) line "END PGM $S(program) $unit"]]]
         }
-        lappend lines [$S(nc) block {M_spindle 5 M_coolant 9}] [$S(nc) line M30]
+        lappend lines [$S(nc) block $off] [$S(nc) line $end]
         if {[dict get $S(dialect) percent]} {lappend lines %}
         return $lines
     }

@@ -119,6 +119,17 @@ proc ::fivax::verify::dialects {} {
     dict keys $Dialects
 }
 
+# ::fivax::verify::Number --
+#	Returns the number of a word's text x, or "" when it is none; leading
+#	zeros are decimal (N0080, G01), never Tcl's octal.
+proc ::fivax::verify::Number {x} {
+    if {[string match {0[0-9]*} $x] || [string match {[-+]0[0-9]*} $x]} {
+        return [::fivax::num::parse $x]
+    }
+    if {[string is double -strict $x]} {return $x}
+    return ""
+}
+
 # ::fivax::verify::RadiusCentre --
 #	Returns the centre of an R-form arc from start to end in plane (17,
 #	18, 19: normal +Z, +Y, +X) turning dir (2 clockwise, 3
@@ -296,8 +307,8 @@ oo::class create ::fivax::verify::Checker {
         set dwell 0
         if {[string first G $text] >= 0} {
             foreach word [lsearch -all -inline -glob $words G*] {
-                set value [string range $word 1 end]
-                if {![string is double -strict $value]} continue
+                set value [::fivax::verify::Number [string range $word 1 end]]
+                if {$value eq ""} continue
                 set g [expr {$value == round($value) ? int($value) : $value}]
                 if {$g in $S(CycleG)} {
                     if {!$S(cycle)} {
@@ -331,8 +342,8 @@ oo::class create ::fivax::verify::Checker {
         set cycle $S(cycle)
         foreach word $words {
             set letter [string index $word 0]
-            set x [string range $word 1 end]
-            if {![string is double -strict $x]} {
+            set x [::fivax::verify::Number [string range $word 1 end]]
+            if {$x eq ""} {
                 lappend unknown text $word
                 continue
             }
@@ -461,8 +472,8 @@ oo::class create ::fivax::verify::Checker {
         set v {X 0.0 Y 0.0 Z 0.0 I 0.0 J 0.0 K 0.0}
         foreach word $words {
             set letter [string index $word 0]
-            set value [string range $word 1 end]
-            if {[dict exists $v $letter] && [string is double -strict $value]} {
+            set value [::fivax::verify::Number [string range $word 1 end]]
+            if {[dict exists $v $letter] && $value ne ""} {
                 dict set v $letter $value
             }
         }

@@ -162,7 +162,10 @@ proc fivax_close_log {} {
 #	Reads the settings and the machine at load time, and sets the mom_kin_*
 #	NX needs: a 3-axis mill (NX passes the CL data through; fivax does the
 #	kinematics), the output unit of the machine, arcs and helixes in pieces
-#	of at most 360 degrees.
+#	of at most 360 degrees; and the mom_sys_* the .def's LEADERs and
+#	BLOCK_TEMPLATEs read (leaders and codes, as the output layer writes
+#	them: fivax::output sysVars), so that a shop's own block in the .def,
+#	written with MOM_do_template, has the post's words.
 fivax_handler fivax_setup {
     global fivax fivax_settings env
     global mom_kin_machine_type mom_kin_output_unit mom_kin_arc_output_mode
@@ -175,6 +178,9 @@ fivax_handler fivax_setup {
     set settings [fivax::settings complete [fivax::settings parse $given]]
     set fivax(settings) $settings
     set fivax(machine) [fivax::machine load [dict get $settings -machine]]
+    foreach {name value} [fivax::output sysVars $fivax(machine) [dict get $settings -controller]] {
+        set ::$name $value
+    }
     set fivax(log) {}
     set fivax(warnings) 0
     set fivax(dryrun) [expr {[dict get $settings -dryrun] eq "on"}]

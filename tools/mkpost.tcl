@@ -2,9 +2,10 @@
 #	Writes one NX post per shipped machine: post/<machine>.tcl, a small
 #	wrapper that sets the machine and sources the shared post/fivax.tcl,
 #	and post/<machine>.def, the shared .def of the machine's dialect with
-#	the machine's name. Prints the template_post.dat line of every post:
-#	post/fivax.tcl itself (FIVAX: the machine of the settings), then each
-#	machine's (README.md lists them; a test checks it).
+#	the machine's name. Prints the template_post.dat line of every post in
+#	post/: post/fivax.tcl itself (FIVAX: the machine of the settings), then
+#	the others by name, the machines' and any made by hand, such as
+#	hh-paper-fig5 (README.md lists them; a test checks it).
 #
 #	tclsh tools/mkpost.tcl ?-check?
 #	-check writes nothing and exits 1 when a post file differs from what
@@ -25,7 +26,7 @@ namespace eval ::mkpost {
 
 # ::mkpost::Line --
 #	Returns the template_post.dat line of the post post/name.tcl (name
-#	fivax: the shared post, FIVAX; else a machine's, FIVAX_<NAME>).
+#	fivax: the shared post, FIVAX; else FIVAX_<NAME>).
 proc ::mkpost::Line {name} {
     set key [expr {$name eq "fivax" ? "FIVAX" : [string toupper FIVAX_$name]}]
     return "$key,\${UGII_CAM_POST_DIR}fivax/post/$name.tcl,\${UGII_CAM_POST_DIR}fivax/post/$name.def"
@@ -76,7 +77,9 @@ proc ::mkpost::Write {path text} {
     file rename -force $path.tmp $path
 }
 
-# ::mkpost::main -- Writes (or checks) the post pair of every machine file.
+# ::mkpost::main --
+#	Writes (or checks) the post pair of every machine file, then prints
+#	the template_post.dat line of every post in post/.
 proc ::mkpost::main {argv} {
     variable options
     variable ::root
@@ -92,7 +95,6 @@ proc ::mkpost::main {argv} {
     }
     set base [Read [file join $root post fivax.def]]
     set stale {}
-    puts [Line fivax]
     foreach file [lsort [glob -directory [file join $root machines] *.tcl]] {
         set name [dict get [::fivax::machine load $file] name]
         foreach {path text} [list [file join $root post $name.tcl] [Wrapper $name] \
@@ -104,6 +106,9 @@ proc ::mkpost::main {argv} {
                 Write $path $text
             }
         }
+    }
+    set names [lmap f [glob -directory [file join $root post] *.tcl] {file rootname [file tail $f]}]
+    foreach name [concat fivax [lsort [lsearch -all -inline -not -exact $names fivax]]] {
         puts [Line $name]
     }
     if {[llength $stale]} {

@@ -1,11 +1,18 @@
 # replay.tcl --
-#	Replays a CLSF file through the fivax post (post/fivax.tcl) outside NX,
-#	emulating NX's MOM runtime, and writes the NC program.
+#	Replays a CLSF file through a fivax post outside NX, emulating NX's MOM
+#	runtime, and writes the NC program.
 #
 #	tclsh tools/replay.tcl ?options? part.cls     ("-" reads standard input)
 #	Run with -help for the options: the posting job's settings
-#	([fivax::settings table], the same table the post reads) plus -o and
-#	-quiet.
+#	([fivax::settings table], the same table the post reads) plus -post,
+#	-o, -quiet, -check-process.
+#
+#	The post. -post picks it as NX does: by name (a shipped post,
+#	post/NAME.tcl, default fivax) or as a post's .tcl file, its .def the
+#	one beside it; a shop's copied and edited post runs as it is. The
+#	settings given on the command line go on top of the post's own (its
+#	wrapper's fivax_settings), as FIVAX_SETTINGS does inside NX; the checks
+#	below use the settings the post assembles (read from it once loaded).
 #
 #	Every option value, the machine file and the output path are checked
 #	before anything runs. Errors are one line ("FILE:LINE: what", or
@@ -36,6 +43,8 @@ namespace eval ::replay {
     variable root [file dirname [file dirname [file normalize [info script]]]]
     # Options of the command line only; the others are the job settings.
     variable cliOptions {
+        {-post text fivax NAME|FILE
+            "the post, as NX picks it: a shipped post's name (post/NAME.tcl) or a post's .tcl file; its .def is the one beside it"}
         {-o text {} FILE "output NC file (default, or -: standard output)"}
         {-quiet bool 0 "" "no summary and no progress line on standard error"}
         {-check-process {enum auto on off} auto WHEN "block check in a second process: on, off, or auto: on for a CL file of 1 MB or more with two processors or more"}
@@ -51,6 +60,12 @@ namespace eval ::replay {
     variable checkProcessBytes 1000000
     # The run's state (see Reset).
     variable R
+    # The settings the environment gives the post (FIVAX_SETTINGS, as in
+    # NX); the command line's go on top (see Runtime).
+    variable environment {}
+    if {[info exists ::env(FIVAX_SETTINGS)] && [string is list $::env(FIVAX_SETTINGS)]} {
+        set environment $::env(FIVAX_SETTINGS)
+    }
 }
 set auto_path [linsert $auto_path 0 [file join $::replay::root lib]]
 package require fivax 0.1
@@ -105,10 +120,13 @@ proc ::replay::Table {} {
     concat [::fivax::settings table] $cliOptions
 }
 
-# ::replay::ParseArgs -- Returns the option dict and the CLSF path from argv.
+# ::replay::ParseArgs --
+#	Returns {opts given clsf} of argv: every option (defaults filled in),
+#	the job settings given on the command line, the CLSF path.
 proc ::replay::ParseArgs {argv} {
     try {
-        lassign [::fivax::opts argv [Table] $argv replay] opts rest
+        lassign [::fivax::opts given [Table] $argv replay] given rest
+        set opts [dict merge [::fivax::opts parse [Table] {}] $given]
     } trap {FIVAX OPTION UNKNOWN} {msg} {
         if {[regexp {unknown option "(.*)": must be} $msg -> name]} {
             Die "replay: unknown option $name (-help lists the options)"
@@ -127,7 +145,35 @@ proc ::replay::ParseArgs {argv} {
     if {[llength $rest] > 1} {
         Die "replay: expected one CL file after the options, got [llength $rest] words: [lrange $rest 0 3]"
     }
-    list $opts [lindex $rest 0]
+    list $opts [dict filter $given key {*}[::fivax::opts names [::fivax::settings table]]] \
+        [lindex $rest 0]
+}
+
+# ::replay::PostFiles --
+#	Returns {tcl def} of the post that -post names: a shipped post's name
+#	(post/NAME.tcl) or a post's .tcl file (a path, or a name ending in
+#	.tcl), its .def the one beside it (as NX loads a post); dies when
+#	either cannot be read.
+proc ::replay::PostFiles {post} {
+    variable root
+    if {[llength [file split $post]] > 1 || [string match *.tcl $post]} {
+        set tcl [file normalize $post]
+    } else {
+        set tcl [file join $root post $post.tcl]
+        if {![file isfile $tcl]} {
+            set names [lsort [lmap f [glob -nocomplain -directory [file join $root post] *.tcl] {
+                file rootname [file tail $f]
+            }]]
+            Die "replay: bad -post \"$post\": no shipped post of that name (post/ has [join $names {, }]);\
+                a post's own file is named with its path or .tcl"
+        }
+    }
+    if {![file isfile $tcl] || ![file readable $tcl]} {Die "replay: -post $post: cannot read $tcl"}
+    set def [file rootname $tcl].def
+    if {![file isfile $def] || ![file readable $def]} {
+        Die "replay: -post $post: cannot read its .def $def (NX loads the .def beside the post)"
+    }
+    list $tcl $def
 }
 
 # ::replay::CheckInput --
@@ -138,19 +184,24 @@ proc ::replay::CheckInput {clsf} {
     if {![file readable $clsf]} {Die "$clsf: cannot read CL file"}
 }
 
+# ::replay::CheckMachineFile --
+#	Dies unless the machine file the settings given on the command line
+#	name (if any) can be read.
+proc ::replay::CheckMachineFile {given} {
+    if {![dict exists $given -machine]} return
+    set file [dict get $given -machine]
+    if {![file isfile $file] || ![file readable $file]} {Die "$file: machine file not found"}
+}
+
 # ::replay::CheckMachine --
 #	Loads and checks the machine file of settings, its output settings
-#	(with the post's .def, as the post makes its output layer) and the
-#	settings that depend on them (the post's check, fivax::settings
+#	(with the post's .def defFile, as the post makes its output layer) and
+#	the settings that depend on them (the post's check, fivax::settings
 #	output); returns the machine dict or dies.
-proc ::replay::CheckMachine {settings} {
-    variable root
-    set file [dict get $settings -machine]
+proc ::replay::CheckMachine {settings defFile} {
     try {
-        set machine [::fivax::machine load $file]
-        [::fivax::settings output $settings $machine [file join $root post fivax.def] replay] destroy
-    } trap {FIVAX MACHINE NOFILE} {} {
-        Die "$file: machine file not found"
+        set machine [::fivax::machine load [dict get $settings -machine]]
+        [::fivax::settings output $settings $machine $defFile replay] destroy
     } trap {FIVAX} {msg} {
         Die $msg
     }
@@ -443,29 +494,67 @@ proc ::replay::CheckProcess {when clsf} {
     expr {$n >= 2}
 }
 
-# ::replay::Post --
-#	Runs the post on clsf with the job settings, writing NC text to
-#	channel chan; out is the output file as NX names it to the post (""
-#	for a stream). Returns the runtime statistics merged with the post's
-#	summary. An error that names no place gets the current CL record's
-#	FILE:LINE; one that is no fivax error is marked internal. With
-#	process 1 the post's checker runs in a second process
-#	(tools/lib/checkproc.tcl); when the post stops on an error of its
-#	own, an error that process found in an earlier block is reported
-#	instead (the post in one process would have stopped there).
-proc ::replay::Post {settings clsf chan out process} {
+# ::replay::Runtime --
+#	Returns a new MOM runtime (fivax::mom create, options args) with the
+#	post postFile and its .def defFile loaded, the settings given added
+#	on top of the post's own as FIVAX_SETTINGS adds them inside NX (after
+#	those of the environment).
+proc ::replay::Runtime {postFile defFile given args} {
     variable root
-    set globals [dict create fivax_settings $settings]
+    variable environment
+    set ::env(FIVAX_SETTINGS) [concat $environment $given]
+    ::fivax::mom create -post $postFile -def $defFile \
+        -autopath [list [file join $root lib] [info library]] {*}$args
+}
+
+# ::replay::PostSettings --
+#	Returns the settings the post postFile (.def defFile) posts with, the
+#	settings given on top (see Runtime), as the post assembles them when
+#	it loads; dies with the post's message when it stops loading, or when
+#	it is no fivax post. (The post loads without the -log given: a post
+#	that stops loading writes its log, and that file is not checked yet.)
+proc ::replay::PostSettings {postFile defFile given} {
+    try {
+        set rt [Runtime $postFile $defFile [dict remove $given -log]]
+    } trap {FIVAX} {msg} {
+        Die $msg
+    } on error {msg} {
+        Die "replay: -post $postFile: the post does not load: $msg"
+    }
+    try {
+        set child [$rt interp]
+        if {![$child eval {info exists ::fivax(settings)}]} {
+            Die "replay: -post $postFile: no fivax post (it sets no fivax(settings))"
+        }
+        set settings [$child eval {set ::fivax(settings)}]
+        dict merge $settings [dict filter $given key -log]
+    } finally {
+        $rt destroy
+    }
+}
+
+# ::replay::Post --
+#	Runs the post postFile (.def defFile) on clsf with the settings given
+#	(see Runtime), writing NC text to channel chan; out is the output
+#	file as NX names it to the post ("" for a stream). Returns the
+#	runtime statistics merged with the post's summary. An error that
+#	names no place gets the current CL record's FILE:LINE; one that is
+#	no fivax error is marked internal. With process 1 the post's checker
+#	runs in a second process (tools/lib/checkproc.tcl); when the post
+#	stops on an error of its own, an error that process found in an
+#	earlier block is reported instead (the post in one process would
+#	have stopped there).
+proc ::replay::Post {postFile defFile given clsf chan out process} {
+    variable root
+    set globals {}
     if {$out ne ""} {
         dict set globals mom_output_file_full_name $out
         dict set globals mom_output_file_directory [file dirname $out]
         dict set globals mom_output_file_basename [file rootname [file tail $out]]
         dict set globals mom_output_file_suffix [string trimleft [file extension $out] .]
     }
-    set rt [::fivax::mom create -post [file join $root post fivax.tcl] \
-        -def [file join $root post fivax.def] -channel $chan \
-        -listing ::replay::Listing -globals $globals \
-        -autopath [list [file join $root lib] [info library]]]
+    set rt [Runtime $postFile $defFile $given -channel $chan -listing ::replay::Listing \
+        -globals $globals]
     if {$process} {
         set child [$rt interp]
         $child eval [list source [file join $root tools lib checkproc.tcl]]
@@ -527,18 +616,19 @@ proc ::replay::main {argv} {
     variable R
     variable bufferSize
     Reset
-    lassign [ParseArgs $argv] opts clsf
-    set settings [::fivax::settings complete \
-        [dict filter $opts key {*}[::fivax::opts names [::fivax::settings table]]]]
-    set machineFile [dict get $settings -machine]
+    lassign [ParseArgs $argv] opts given clsf
+    lassign [PostFiles [dict get $opts -post]] postFile defFile
     CheckInput $clsf
+    CheckMachineFile $given
+    set settings [PostSettings $postFile $defFile $given]
+    set machineFile [dict get $settings -machine]
     set target ""
     if {[dict get $opts -o] ni {"" -}} {
         set target [CheckTarget -o [dict get $opts -o] $clsf $machineFile]
         # from here on a failed run removes the program of an earlier one
         if {[lindex $target 0] eq "file"} {set R(stale) [list [lindex $target 1]]}
     }
-    CheckMachine $settings
+    CheckMachine $settings $defFile
     if {[dict get $settings -log] ne ""} {
         CheckTarget -log [dict get $settings -log] $clsf $machineFile
     }
@@ -557,13 +647,14 @@ proc ::replay::main {argv} {
         if {$log ne ""} {lappend R(stale) $log}
     }
     OpenTarget $target $log
-    if {$log ne ""} {dict set settings -log $R(tmp).log}
+    if {$log ne ""} {dict set given -log $R(tmp).log}
     set out [expr {[lindex $target 0] eq "file" ? [file normalize [dict get $opts -o]] : ""}]
     set R(sink) [chan create write ::replay::Sink]
     chan configure $R(sink) -translation lf -encoding utf-8 -buffering full \
         -buffersize $bufferSize
     try {
-        set stats [Post $settings $clsf $R(sink) $out [CheckProcess [dict get $opts -check-process] $clsf]]
+        set stats [Post $postFile $defFile $given $clsf $R(sink) $out \
+            [CheckProcess [dict get $opts -check-process] $clsf]]
         if {[dict exists $stats limitViolations] && [dict get $stats limitViolations] > 0} {
             # A safety net: the checker refuses such a value when it is written.
             error "[dict get $stats limitViolations] values outside the machine's limits; no NC file written"
