@@ -46,7 +46,7 @@
 #	plane) is seen at its end only.
 
 namespace eval ::fivax::dryrun {
-    namespace export run format tools
+    namespace export run format tools tooling toolStep
     namespace ensemble create -prefixes 0
     variable Options {
         {-controller {maybe word} {} NAME "dialect of the NC text (default: the machine's controller)"}
@@ -104,11 +104,12 @@ proc ::fivax::dryrun::run {machine lines args} {
     if {$controller eq ""} {set controller [dict get $machine controller]}
     array set R [list machine $machine opts $opts events {} moves {} \
         klartext [expr {$controller eq "heidenhain"}] units [dict get $machine units] \
-        offset "" pending "" tool "" length [dict get $machine tool_length] radius 0.0 \
+        offset "" length [dict get $machine tool_length] radius 0.0 \
         comp 0 spindle 0 speed "" coolant 0 spindleSaid 0 end 0 endSaid 0 \
         pose "" joints "" space joint model ""]
     set checker [::fivax::verify reader $machine -table-offset [dict get $opts -table-offset] \
         -controller $controller]
+    set R(tooling) [tooling [dict get $opts -tools] [dict get $opts -tool-length] $R(klartext)]
     if {[dict get $opts -tool-length] ne ""} {set R(length) [dict get $opts -tool-length]}
     try {
         SetLength $checker $R(length)
@@ -196,8 +197,11 @@ proc ::fivax::dryrun::Event {n kind what} {
 proc ::fivax::dryrun::ReadLine {checker line n} {
     variable R
     set blk [$checker read $line]
-    foreach c [dict get $blk comments] {
-        if {[regexp {^\s*FIVAX TOOL\M} $c]} {ToolComment $checker $c $n}
+    # (the tool follower changes at T and M words and comments only)
+    if {[llength [dict get $blk comments]] || [string first T $line] >= 0
+            || [string first M $line] >= 0} {
+        set R(tooling) [toolStep $R(tooling) $blk]
+        Tool $checker $n
     }
     if {![dict get $blk block]} {
         if {[dict get $blk end] && !$R(end)} {set R(end) $n}
@@ -307,8 +311,8 @@ proc ::fivax::dryrun::ArcPoses {checker arc words pose} {
 
 # ::fivax::dryrun::Words --
 #	Follows the state words of a block (words: {letter value} pairs;
-#	moved: its axis letters) at line n: units, work offset, tool change,
-#	length compensation, spindle, coolant.
+#	moved: its axis letters) at line n: units, work offset, length
+#	compensation, spindle, coolant (tool changes: Tool).
 proc ::fivax::dryrun::Words {checker words moved n} {
     variable R
     set h 0
@@ -324,14 +328,6 @@ proc ::fivax::dryrun::Words {checker words moved n} {
             }
             H {set h 1}
             D {set R(comp) [expr {$v != 0}]}
-            T {
-                set R(pending) [expr {int($v)}]
-                if {$R(klartext)} {
-                    # TOOL CALL: tool change, length compensation on
-                    ToolChange $checker $n
-                    set R(comp) 1
-                }
-            }
             S {
                 if {$R(speed) ne $v} {set R(spindleSaid) 0}
                 set R(speed) $v
@@ -340,7 +336,6 @@ proc ::fivax::dryrun::Words {checker words moved n} {
                 switch -exact -- [expr {int($v)}] {
                     3 - 4 {set R(spindle) 1; set R(spindleSaid) 0}
                     5 {set R(spindle) 0}
-                    6 {ToolChange $checker $n}
                     7 - 8 {set R(coolant) 1}
                     9 {set R(coolant) 0}
                 }
@@ -359,22 +354,22 @@ proc ::fivax::dryrun::Words {checker words moved n} {
     }
 }
 
-# ::fivax::dryrun::ToolChange --
-#	The pending tool goes into the spindle at line n (which stops): its
-#	length and radius from the tool table when it has them.
-proc ::fivax::dryrun::ToolChange {checker n} {
+# ::fivax::dryrun::Tool --
+#	Follows the tool the follower R(tooling) saw at line n: its notes as
+#	events, a tool call (the spindle stops; Klartext's TOOL CALL switches
+#	length compensation on), its length and radius.
+proc ::fivax::dryrun::Tool {checker n} {
     variable R
-    set R(tool) $R(pending)
-    set R(spindle) 0
-    set R(spindleSaid) 0
-    set tools [dict get $R(opts) -tools]
-    if {$R(tool) ne "" && [dict exists $tools $R(tool)]} {
-        set entry [dict get $tools $R(tool)]
-        if {[dict exists $entry radius]} {set R(radius) [dict get $entry radius]}
-        if {[dict exists $entry length] && [dict get $R(opts) -tool-length] eq ""} {
-            SetLength $checker [dict get $entry length]
-        }
+    foreach note [dict get $R(tooling) notes] {Event $n {*}$note}
+    if {[dict get $R(tooling) called]} {
+        set R(spindle) 0
+        set R(spindleSaid) 0
+        if {$R(klartext)} {set R(comp) 1}
     }
+    set len [dict get $R(tooling) length]
+    if {$len ne "" && $len != $R(length)} {SetLength $checker $len}
+    set rad [dict get $R(tooling) radius]
+    if {$rad ne ""} {set R(radius) $rad}
 }
 
 # ::fivax::dryrun::SetLength -- Reads on with a tool of length len (mm).
@@ -385,30 +380,72 @@ proc ::fivax::dryrun::SetLength {checker len} {
     set R(model) [$checker model]
 }
 
-# ::fivax::dryrun::ToolComment --
-#	Reads the comment "FIVAX TOOL n LENGTH L ?RADIUS R?" at line n: the
-#	tool's length and radius the program was computed for (the tool
-#	table, then -tool-length, take precedence; a tool table length that
-#	differs is a toollength event).
-proc ::fivax::dryrun::ToolComment {checker text n} {
-    variable R
+# ::fivax::dryrun::tooling --
+#	Returns a new tool follower (a dict, see toolStep) for the tool table
+#	tools (as tools returns), override (a tool length that wins over
+#	both the table and the program, or "") and klartext (1: a T word is
+#	Heidenhain's TOOL CALL, which changes tools; else M6 changes to the
+#	last T). The dry run, tools/verify.tcl and tools/kinerr.tcl follow
+#	the tool in the spindle with it.
+proc ::fivax::dryrun::tooling {tools override klartext} {
+    dict create tools $tools override $override klartext $klartext pending "" \
+        length $override radius "" called 0 notes {}
+}
+
+# ::fivax::dryrun::toolStep --
+#	Returns the follower state after one NC line read by a verify Checker
+#	(blk: its read dict): its tool calls (M6; Klartext's TOOL CALL), then
+#	its comments "FIVAX TOOL n LENGTH L ?RADIUS R?" (the tool the
+#	program's X Y Z were computed for). Keys:
+#	  length  the tool length to compute with: the override, else the
+#	          tool table's length of the tool called or commented, else
+#	          the comment's; "" while none is known (keep the last one)
+#	  radius  the tool table's radius, else the comment's; "" likewise
+#	  called  1 when the line called a tool into the spindle
+#	  notes   this line's {kind what}: "unreadable" (a FIVAX TOOL comment
+#	          not understood), "toollength" (the comment's length differs
+#	          from the tool table's)
+proc ::fivax::dryrun::toolStep {state blk} {
+    variable lengthTol
+    dict set state notes {}
+    dict set state called 0
+    set tools [dict get $state tools]
+    set override [dict get $state override]
+    foreach {letter v} [dict get $blk words] {
+        if {$letter eq "T"} {dict set state pending [expr {int([::fivax::num::parse $v])}]}
+        if {($letter eq "T" && [dict get $state klartext]) || ($letter eq "M" && $v == 6)} {
+            dict set state called 1
+            set entry [TableEntry $tools [dict get $state pending]]
+            if {[dict exists $entry radius]} {dict set state radius [dict get $entry radius]}
+            if {[dict exists $entry length] && $override eq ""} {
+                dict set state length [dict get $entry length]
+            }
+        }
+    }
     set num {([-+]?[0-9]*\.?[0-9]+)}
-    if {![regexp "^\\s*FIVAX TOOL (\\d+) LENGTH ${num}(?: RADIUS ${num})?\\s*\$" $text -> tool len rad]} {
-        Event $n unreadable "tool comment not understood: $text"
-        return
+    foreach c [dict get $blk comments] {
+        if {![regexp {^\s*FIVAX TOOL\M} $c]} continue
+        if {![regexp "^\\s*FIVAX TOOL (\\d+) LENGTH ${num}(?: RADIUS ${num})?\\s*\$" $c -> tool len rad]} {
+            dict lappend state notes [list unreadable "tool comment not understood: $c"]
+            continue
+        }
+        set tool [scan $tool %d]
+        set entry [TableEntry $tools $tool]
+        set x [::fivax::num::parse $len]
+        if {[dict exists $entry length] && abs([dict get $entry length] - $x) > $lengthTol} {
+            dict lappend state notes [list toollength "tool $tool: the program was computed for length\
+                $len, the tool table has [dict get $entry length]"]
+        }
+        if {$rad ne "" && ![dict exists $entry radius]} {dict set state radius [::fivax::num::parse $rad]}
+        if {![dict exists $entry length] && $override eq ""} {dict set state length $x}
     }
-    set tool [scan $tool %d]
-    set entry {}
-    set tools [dict get $R(opts) -tools]
-    if {[dict exists $tools $tool]} {set entry [dict get $tools $tool]}
-    if {[dict exists $entry length] && abs([dict get $entry length] - $len) > $::fivax::dryrun::lengthTol} {
-        Event $n toollength "tool $tool: the program was computed for length $len,\
-            the tool table has [dict get $entry length]"
-    }
-    if {$rad ne "" && ![dict exists $entry radius]} {set R(radius) [expr {double($rad)}]}
-    if {![dict exists $entry length] && [dict get $R(opts) -tool-length] eq ""} {
-        SetLength $checker [expr {double($len)}]
-    }
+    return $state
+}
+
+# ::fivax::dryrun::TableEntry -- Returns the tool table's entry of tool ("" or a number), {} when none.
+proc ::fivax::dryrun::TableEntry {tools tool} {
+    if {$tool ne "" && [dict exists $tools $tool]} {return [dict get $tools $tool]}
+    return {}
 }
 
 # ::fivax::dryrun::Geometry --
