@@ -109,7 +109,7 @@ proc ::fivax::dryrun::run {machine lines args} {
         pose "" joints "" space joint model ""]
     set checker [::fivax::verify reader $machine -table-offset [dict get $opts -table-offset] \
         -controller $controller]
-    set R(tooling) [tooling [dict get $opts -tools] [dict get $opts -tool-length] $R(klartext)]
+    set R(tooling) [tooling [dict get $opts -tools] [dict get $opts -tool-length]]
     if {[dict get $opts -tool-length] ne ""} {set R(length) [dict get $opts -tool-length]}
     try {
         SetLength $checker $R(length)
@@ -382,21 +382,23 @@ proc ::fivax::dryrun::SetLength {checker len} {
 
 # ::fivax::dryrun::tooling --
 #	Returns a new tool follower (a dict, see toolStep) for the tool table
-#	tools (as tools returns), override (a tool length that wins over
-#	both the table and the program, or "") and klartext (1: a T word is
-#	Heidenhain's TOOL CALL, which changes tools; else M6 changes to the
-#	last T). The dry run, tools/verify.tcl and tools/kinerr.tcl follow
-#	the tool in the spindle with it.
-proc ::fivax::dryrun::tooling {tools override klartext} {
-    dict create tools $tools override $override klartext $klartext pending "" \
-        length $override radius "" called 0 notes {}
+#	tools (as tools returns) and override (a tool length that wins over
+#	both the table and the program, or ""). The dry run,
+#	tools/verify.tcl and tools/kinerr.tcl follow the tool in the spindle
+#	with it.
+proc ::fivax::dryrun::tooling {tools override} {
+    dict create tools $tools override $override pending "" tool "" length $override radius "" \
+        called 0 notes {}
 }
 
 # ::fivax::dryrun::toolStep --
 #	Returns the follower state after one NC line read by a verify Checker
-#	(blk: its read dict): its tool calls (M6; Klartext's TOOL CALL), then
+#	(blk: its read dict): its tool calls (M6 calls the last T; the
+#	Checker reads Klartext's TOOL CALL n as T n M6), then
 #	its comments "FIVAX TOOL n LENGTH L ?RADIUS R?" (the tool the
 #	program's X Y Z were computed for). Keys:
+#	  tool    the tool in the spindle: the last called or commented (""
+#	          before any)
 #	  length  the tool length to compute with: the override, else the
 #	          tool table's length of the tool called or commented, else
 #	          the comment's; "" while none is known (keep the last one)
@@ -412,9 +414,12 @@ proc ::fivax::dryrun::toolStep {state blk} {
     set tools [dict get $state tools]
     set override [dict get $state override]
     foreach {letter v} [dict get $blk words] {
-        if {$letter eq "T"} {dict set state pending [expr {int([::fivax::num::parse $v])}]}
-        if {($letter eq "T" && [dict get $state klartext]) || ($letter eq "M" && $v == 6)} {
+        if {$letter eq "T" && [set t [::fivax::num::parse $v]] ne ""} {
+            dict set state pending [expr {int($t)}]
+        }
+        if {$letter eq "M" && $v == 6} {
             dict set state called 1
+            dict set state tool [dict get $state pending]
             set entry [TableEntry $tools [dict get $state pending]]
             if {[dict exists $entry radius]} {dict set state radius [dict get $entry radius]}
             if {[dict exists $entry length] && $override eq ""} {
@@ -430,6 +435,7 @@ proc ::fivax::dryrun::toolStep {state blk} {
             continue
         }
         set tool [scan $tool %d]
+        dict set state tool $tool
         set entry [TableEntry $tools $tool]
         set x [::fivax::num::parse $len]
         if {[dict exists $entry length] && abs([dict get $entry length] - $x) > $lengthTol} {

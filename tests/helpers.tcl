@@ -365,3 +365,27 @@ proc testProduct {args} {
     }
     return $R
 }
+
+# twoToolPrograms --
+#	Posts, on hh-tilt45 in joint mode (-tcp 0: the head's X Y Z depend on
+#	the tool length), the bundled sim5.cls path twice, with tool 1 (length
+#	75) as it is and then with tool 2 (length 140, operation SWARF_B), and
+#	that second operation alone, into the temporary directory. Returns the
+#	paths {two second} of the two NC programs (name prefix: prefix).
+proc twoToolPrograms {prefix} {
+    set f [open [file join $::fivaxRoot tests data sim5.cls]]
+    set lines [split [string trim [read $f]] \n]
+    close $f
+    set second [concat {"TOOL PATH/SWARF_B,TOOL,BALL6" "TLDATA/MILL,6.0000,3.0000,140.0000,0.0000,0.0000"
+        "LOAD/TOOL,2,ADJUST,2"} [lrange $lines 3 end]]
+    set out {}
+    foreach {name cl} [list two [concat $lines $second] second $second] {
+        set path [makeFile [join $cl \n] $prefix-$name.cls]
+        set nc [file join [temporaryDirectory] $prefix-$name.nc]
+        exec [info nameofexecutable] [file join $::fivaxRoot tools replay.tcl] -quiet \
+            -machine [file join $::fivaxRoot machines hh-tilt45.tcl] -tcp 0 -o $nc $path 2>@1
+        file delete $path [file rootname $nc].log
+        lappend out $nc
+    }
+    return $out
+}
