@@ -389,3 +389,42 @@ proc twoToolPrograms {prefix} {
     }
     return $out
 }
+
+# svgSeries --
+#	Returns {xs ys starts} of the series (class series) named name in the
+#	SVG text of a chart (tools/lib/svgplot.tcl): its points mapped back to
+#	data values through the tick labels (xtick, ytick) of its panel, and
+#	the indices of the points where a subpath starts (M: a break).
+proc svgSeries {text name} {
+    package require tdom
+    set doc [dom parse $text]
+    try {
+        set node ""
+        foreach n [$doc selectNodes {//*[@class='series']}] {
+            if {[$n getAttribute data-name] eq $name} {set node $n}
+        }
+        if {$node eq ""} {return "no series $name"}
+        set panel [$node parentNode]
+        foreach axis {x y} {
+            set ticks [lmap t [$panel selectNodes ".//*\[@class='${axis}tick'\]"] {
+                list [$t getAttribute $axis] [$t text]
+            }]
+            lassign [lindex $ticks 0] p0 v0
+            lassign [lindex $ticks end] p1 v1
+            set map($axis) [list $p0 $v0 [expr {($v1 - $v0) / double($p1 - $p0)}]]
+        }
+        set xs {}
+        set ys {}
+        set starts {}
+        foreach {- pen px py} [regexp -all -inline {([ML])([-0-9.]+),([-0-9.]+)} [$node getAttribute d]] {
+            if {$pen eq "M"} {lappend starts [llength $xs]}
+            foreach axis {x y} p [list $px $py] {
+                lassign $map($axis) p0 v0 k
+                lappend ${axis}s [expr {$v0 + ($p - $p0) * $k}]
+            }
+        }
+        list $xs $ys $starts
+    } finally {
+        $doc delete
+    }
+}

@@ -186,14 +186,19 @@ proc ::kinerrtool::main {argv} {
             if {![dict get $opts -quiet]} {puts "kinerr: wrote [dict get $opts -csv]"}
         }
         if {[dict get $opts -svg] ne ""} {
-            set idx [lsearch -all $rows *]
-            set svg [::fivax::svgplot chart \
+            # the tip error in mm and the axis error in degrees each on its own
+            # axis, along the NC lines, the worst lines marked
+            set panels {}
+            foreach k {3 4} what {"tip error dpos" "axis error dangle"} unit {mm deg} {
+                set ys [lmap r $rows {lindex $r $k}]
+                lappend panels [list -ylabel "$what ($unit)" -series [list [list "$what ($unit)" $lines $ys]] \
+                    -marks [::fivax::svgplot worst $lines $ys 3 "line "]]
+            }
+            set svg [::fivax::svgplot panels \
                 -title [format "Rotary-axis error on %s: %s %g deg, %s %g deg (%s)" \
                     [dict get $machine name] [lindex $names 0] [::fivax::num::deg [lindex $errors 0]] \
                     [lindex $names 1] [::fivax::num::deg [lindex $errors 1]] [dict get $opts -mode]] \
-                -xlabel "cutting block (G1, in file order)" -ylabel "error (tip: mm, axis: deg)" \
-                -series [list [list "tip error dpos (mm)" $idx [lmap r $rows {lindex $r 3}]] \
-                             [list "axis error dangle (deg)" $idx [lmap r $rows {lindex $r 4}]]]]
+                -xlabel "NC line of the cutting block ([file tail $path])" -panels $panels]
             ::fivax::svgplot write [dict get $opts -svg] $svg
             if {![dict get $opts -quiet]} {puts "kinerr: wrote [dict get $opts -svg]"}
         }

@@ -670,36 +670,40 @@ proc ::verifytool::Clsf {path rows} {
     ::fivax::nctool::writeLines $path $lines
 }
 
-# ::verifytool::Plots -- Writes the three plots of the rows with names prefix-*.svg; returns the paths.
+# ::verifytool::Plots --
+#	Writes the three plots of the rows with names prefix-*.svg; returns
+#	the paths. Their x axis is the NC file's line numbers, the worst lines
+#	marked; rotary values that wrap (360 to 0) break the line; rapids are
+#	dashed in the path.
 proc ::verifytool::Plots {prefix rows names tol file} {
     set n [llength $rows]
-    set idx {}
-    for {set i 0} {$i < $n} {incr i} {lappend idx $i}
+    set lines [lmap r $rows {lindex $r 0}]
+    set xlabel "NC line ([file tail $file])"
     set series {}
     foreach k {3 4} name $names {
-        lappend series [list "$name (deg)" $idx [lmap r $rows {
+        lappend series [list "$name (deg)" $lines [lmap r $rows {
             ::fivax::num::deg [lindex $r 3 $k]}]]
     }
     set axes [::fivax::svgplot chart -title "Rotary axes of [file tail $file]" \
-        -xlabel "block (written motion blocks in file order)" -ylabel "axis value (deg)" \
-        -series $series -zero 0]
+        -xlabel $xlabel -ylabel "axis value (deg)" -series $series -zero 0 -wrap 360]
     set dev {}
+    set all {{} {}}
     foreach {k label} {8 "tip inside blocks" 6 "tip at block ends vs CL"} {
         set xs {}
         set ys {}
-        set i 0
         foreach r $rows {
-            if {[lindex $r $k] ne ""} {lappend xs $i; lappend ys [lindex $r $k]}
-            incr i
+            if {[lindex $r $k] ne ""} {lappend xs [lindex $r 0]; lappend ys [lindex $r $k]}
         }
         if {[llength $xs]} {lappend dev [list "$label (mm)" $xs $ys]}
+        lset all 0 [concat [lindex $all 0] $xs]
+        lset all 1 [concat [lindex $all 1] $ys]
     }
     set deviation [::fivax::svgplot chart -title "Tool tip deviation, [file tail $file]" \
-        -xlabel "block (written motion blocks in file order)" -ylabel "deviation (mm)" \
-        -series $dev -limit [list $tol "tolerance $tol mm"]]
+        -xlabel $xlabel -ylabel "deviation (mm)" -series $dev -limit [list $tol "tolerance $tol mm"] \
+        -marks [::fivax::svgplot worst {*}$all 3 "line "]]
     set path [::fivax::svgplot projections -title "Back-plotted tool path, [file tail $file]" \
         -points [lmap r $rows {lindex $r 4}] -axes [lmap r $rows {lindex $r 5}] \
-        -every [expr {max(1, $n / 150)}] -whisker 10]
+        -rapids [lmap r $rows {expr {[lindex $r 2] == 0}}] -every [expr {max(1, $n / 150)}] -whisker 10]
     set out {}
     foreach {kind text} [list axes $axes deviation $deviation path $path] {
         lappend out [::fivax::svgplot write $prefix-$kind.svg $text]
