@@ -46,7 +46,7 @@
 #	plane) is seen at its end only.
 
 namespace eval ::fivax::dryrun {
-    namespace export run format tools tooling toolStep
+    namespace export run format tools tooling toolStep progress
     namespace ensemble create -prefixes 0
     variable Options {
         {-controller {maybe word} {} NAME "dialect of the NC text (default: the machine's controller)"}
@@ -86,6 +86,10 @@ namespace eval ::fivax::dryrun {
     variable depthClear 1.0
     # Two tool lengths differ when they differ by more than this (mm).
     variable lengthTol 0.0005
+    # The progress command (see progress) and how many lines or moves
+    # apart it runs.
+    variable progress ""
+    variable progressEvery 256
     # R: the state of one run (see run).
     variable R
 }
@@ -97,6 +101,8 @@ namespace eval ::fivax::dryrun {
 proc ::fivax::dryrun::run {machine lines args} {
     variable Options
     variable R
+    variable progress
+    variable progressEvery
     set opts [::fivax::opts::parse $Options $args "dryrun run"]
     CheckTools [dict get $opts -tools]
     array unset R
@@ -106,7 +112,8 @@ proc ::fivax::dryrun::run {machine lines args} {
         klartext [expr {$controller eq "heidenhain"}] units [dict get $machine units] \
         offset "" length [dict get $machine tool_length] radius 0.0 \
         comp 0 spindle 0 speed "" coolant 0 spindleSaid 0 end 0 endSaid 0 \
-        pose "" joints "" space joint model ""]
+        pose "" joints "" space joint model "" progress $progress \
+        every [expr {$progress eq "" ? 1 << 62 : $progressEvery}] followed 0 toFollow 0]
     set checker [::fivax::verify reader $machine -table-offset [dict get $opts -table-offset] \
         -controller $controller]
     set R(tooling) [tooling [dict get $opts -tools] [dict get $opts -tool-length]]
@@ -114,9 +121,11 @@ proc ::fivax::dryrun::run {machine lines args} {
     try {
         SetLength $checker $R(length)
         set n 0
+        set total [llength $lines]
         foreach line $lines {
             incr n
             ReadLine $checker $line $n
+            if {$n % $R(every) == 0} {{*}$progress "lines read" $n $total}
         }
     } finally {
         $checker destroy
@@ -124,6 +133,29 @@ proc ::fivax::dryrun::run {machine lines args} {
     if {!$R(end)} {Event $n end "the program never ends (no M2, M30 or END PGM)"}
     Geometry
     lsort -integer -index 0 $R(events)
+}
+
+# ::fivax::dryrun::progress --
+#	Sets the command prefix that runs from now on call with what ("lines
+#	read", then "moves followed"), how many so far and of how many, every
+#	256 lines or moves (for a progress display: the moves, followed
+#	through the stock once the program is read, take most of the time);
+#	"" (the default) turns it off. Returns the previous one.
+proc ::fivax::dryrun::progress {cmd} {
+    variable progress
+    set old $progress
+    set progress $cmd
+    return $old
+}
+
+# ::fivax::dryrun::Followed --
+#	Counts one more move followed through the stock; calls the progress
+#	command every R(every) moves.
+proc ::fivax::dryrun::Followed {} {
+    variable R
+    if {[incr R(followed)] % $R(every) == 0} {
+        {*}$R(progress) "moves followed" $R(followed) $R(toFollow)
+    }
 }
 
 # ::fivax::dryrun::format -- Returns the events as lines "FILE:LINE: kind: what".
@@ -483,15 +515,23 @@ proc ::fivax::dryrun::Geometry {} {
     set R(cutterToTable) $tableGiven
     set R(silent) 0
     set R(final) 0
+    # (the moves to follow: every one, and without -stock the cuts first)
+    set R(toFollow) [llength $R(moves)]
     if {$R(estimated)} {
         # the part as the program leaves it: every cut first, then the
         # uncut cells reached from the map's edge are air, those enclosed
         # by cuts (a boss) the highest near cut's level
+        foreach move $R(moves) {
+            if {[lindex $move 0] in {cut hole}} {incr R(toFollow)}
+        }
         LocalTops $tips
         set R(H0) $R(H)
         set R(silent) 1
         foreach move $R(moves) {
-            if {[lindex $move 0] in {cut hole}} {Move $move}
+            if {[lindex $move 0] in {cut hole}} {
+                Followed
+                Move $move
+            }
         }
         set R(silent) 0
         set R(final) 1
@@ -499,6 +539,7 @@ proc ::fivax::dryrun::Geometry {} {
     }
     Blocks
     foreach move $R(moves) {
+        Followed
         set kind [lindex $move 0]
         if {$kind eq "switch"} {
             lassign $move - n pose what
