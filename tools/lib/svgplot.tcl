@@ -93,54 +93,72 @@ proc ::fivax::svgplot::worst {xs ys n prefix} {
 #	stacked on one x axis (its range: all their series), with title and
 #	x axis title xlabel under the lowest, in width x height pixels.
 proc ::fivax::svgplot::Panels {title xlabel width height panels} {
-    variable Colours
     set xs {}
     foreach p $panels {
         foreach s [dict get $p -series] {lappend xs {*}[lindex $s 1]}
     }
     set xr [Range $xs]
     set n [llength $panels]
-    set gap 40
-    set h [expr {($height - 40 - 60 - $gap * ($n - 1)) / double($n)}]
+    # (above each box its legend's row)
+    set top 56
+    set gap 52
+    set h [expr {($height - $top - 60 - $gap * ($n - 1)) / double($n)}]
     set body ""
     set colour 0
     set k 0
     foreach p $panels {
-        set y0 [expr {round(40 + $k * ($h + $gap))}]
-        set box [list 70 $y0 [expr {$width - 20}] [expr {round(40 + $k * ($h + $gap) + $h)}]]
-        set ys {}
-        foreach s [dict get $p -series] {lappend ys {*}[lindex $s 2]}
-        if {[llength [dict get $p -limit]]} {lappend ys [lindex [dict get $p -limit] 0]}
-        if {[dict get $p -zero]} {lappend ys 0.0}
-        set fx [Scale $xr [lindex $box 0] [lindex $box 2]]
-        set fy [Scale [Range $ys] [lindex $box 3] [lindex $box 1]]
+        set y0 [expr {$top + $k * ($h + $gap)}]
+        set box [list 70 [expr {round($y0)}] [expr {$width - 20}] [expr {round($y0 + $h)}]]
         incr k
-        append body "<g class=\"panel\">\n" \
-            [Frame $box $fx $fy [expr {$k == $n ? $xlabel : ""}] [dict get $p -ylabel]]
-        set legend {}
-        foreach s [dict get $p -series] {
-            lassign $s name sx sy
-            set c [lindex $Colours [expr {$colour % [llength $Colours]}]]
-            incr colour
-            set breaks [expr {[dict get $p -wrap] > 0 ? [Wraps $sy [dict get $p -wrap]] : {}}]
-            append body [Path series $name $c [Map $fx $sx] [Map $fy $sy] $breaks]
-            lappend legend $name $c solid
-        }
-        if {[llength [dict get $p -limit]]} {
-            lassign [dict get $p -limit] value label
-            set y [Fmt [Apply $fy $value]]
-            append body "<line class=\"limit\" x1=\"[lindex $box 0]\" y1=\"$y\" x2=\"[lindex $box 2]\"\
-                y2=\"$y\" stroke=\"#000\" stroke-dasharray=\"6,4\"/>\n"
-            lappend legend $label #000 dashed
-        }
-        foreach m [dict get $p -marks] {
-            lassign $m x y label
-            append body [Mark $label $x [Apply $fx $x] [Apply $fy $y]]
-        }
-        append body [Legend $legend [expr {[lindex $box 2] - [LegendWidth $legend] - 8}] \
-            [expr {[lindex $box 1] + 8}]] "</g>\n"
+        lassign [Panel $p $box $xr [expr {$k == $n ? $xlabel : ""}] $colour] svg colour
+        append body $svg
     }
     Document $width $height $title $body
+}
+
+# ::fivax::svgplot::Panel --
+#	Returns {svg colour}: panel p (an option dict, see chart) drawn in
+#	box {x0 y0 x1 y1} over the x range xr (x axis title xlabel, "" for
+#	none), its series coloured from the colour index colour on, and the
+#	next colour index; the legend is a row above the box.
+proc ::fivax::svgplot::Panel {p box xr xlabel colour} {
+    variable Colours
+    set ys {}
+    foreach s [dict get $p -series] {lappend ys {*}[lindex $s 2]}
+    if {[llength [dict get $p -limit]]} {lappend ys [lindex [dict get $p -limit] 0]}
+    if {[dict get $p -zero]} {lappend ys 0.0}
+    set yr [Range $ys]
+    if {[llength [dict get $p -marks]]} {
+        # (room above the marks for their labels)
+        lset yr 1 [expr {[lindex $yr 1] + 0.12 * ([lindex $yr 1] - [lindex $yr 0])}]
+    }
+    set fx [Scale $xr [lindex $box 0] [lindex $box 2]]
+    set fy [Scale $yr [lindex $box 3] [lindex $box 1]]
+    set body "<g class=\"panel\">\n[Frame $box $fx $fy $xlabel [dict get $p -ylabel]]"
+    set legend {}
+    foreach s [dict get $p -series] {
+        lassign $s name sx sy
+        set c [lindex $Colours [expr {$colour % [llength $Colours]}]]
+        incr colour
+        set px [Map $fx $sx]
+        set py [Map $fy $sy]
+        set breaks [expr {[dict get $p -wrap] > 0 ? [Wraps $sy [dict get $p -wrap]] : {}}]
+        append body [Path series $name $c $px $py $breaks]
+        lappend legend $name $c solid
+    }
+    if {[llength [dict get $p -limit]]} {
+        lassign [dict get $p -limit] value label
+        set y [Fmt [Apply $fy $value]]
+        append body "<line class=\"limit\" x1=\"[lindex $box 0]\" y1=\"$y\" x2=\"[lindex $box 2]\"\
+            y2=\"$y\" stroke=\"#000\" stroke-dasharray=\"6,4\"/>\n"
+        lappend legend $label #000 dashed
+    }
+    append body [Legend $legend [lindex $box 2] [expr {[lindex $box 1] - 6}]]
+    foreach m [dict get $p -marks] {
+        lassign $m x y label
+        append body [Mark $label $x [Apply $fx $x] [Apply $fy $y] [lindex $box 2]]
+    }
+    list "$body</g>\n" $colour
 }
 
 # ::fivax::svgplot::Wraps --
@@ -160,14 +178,17 @@ proc ::fivax::svgplot::Wraps {values turn} {
 }
 
 # ::fivax::svgplot::Mark --
-#	Returns a marked point at pixel px, py: a circle and its label (data
-#	x: the point's x value).
-proc ::fivax::svgplot::Mark {label x px py} {
+#	Returns a marked point at pixel px, py: a circle and its label, on
+#	its right, or its left near the plot's right edge right (data x: the
+#	point's x value).
+proc ::fivax::svgplot::Mark {label x px py right} {
+    set left [expr {$px > $right - 80}]
+    set tx [Fmt [expr {$left ? $px - 6 : $px + 6}]]
     set px [Fmt $px]
     set py [Fmt $py]
     return "<g class=\"mark\" data-x=\"[Esc $x]\"><circle cx=\"$px\" cy=\"$py\" r=\"4\" fill=\"none\"\
-        stroke=\"#000\" stroke-width=\"1.5\"/><text x=\"[Fmt [expr {$px + 6}]]\" y=\"[Fmt [expr {$py - 6}]]\"\
-        font-size=\"11\">[Esc $label]</text></g>\n"
+        stroke=\"#000\" stroke-width=\"1.5\"/><text x=\"$tx\" y=\"[Fmt [expr {$py - 6}]]\"\
+        text-anchor=\"[expr {$left ? "end" : "start"}]\" font-size=\"11\">[Esc $label]</text></g>\n"
 }
 
 # ::fivax::svgplot::projections --
@@ -230,10 +251,10 @@ proc ::fivax::svgplot::projections {args} {
         if {[llength $rapids]} {append body [Rapids "rapid $name" [lindex $Colours 4] $px $py $rapids]}
         incr k
     }
-    set legend [list "tool tip path (cutting)" [lindex $Colours 0] solid \
+    set legend [list "tool tip path[expr {[llength $rapids] ? " (cutting)" : ""}]" [lindex $Colours 0] solid \
         "tool axis (every ${-every}th point, [Fmt ${-whisker}] mm)" [lindex $Colours 1] solid]
     if {[llength $rapids]} {lappend legend "rapid (G0)" [lindex $Colours 4] dashed}
-    append body [Legend $legend 20 4]
+    append body [Legend $legend [expr {${-width} - 20}] 44]
     Document ${-width} ${-height} ${-title} $body
 }
 
@@ -408,26 +429,25 @@ proc ::fivax::svgplot::Frame {box fx fy xlabel ylabel} {
 }
 
 # ::fivax::svgplot::Legend --
-#	Returns a legend box at x, y for the flat list of {name colour style}.
+#	Returns a legend of the flat list of {name colour style} items as one
+#	row ending at x, its text on the baseline y (above a plot, never over
+#	its data).
 proc ::fivax::svgplot::Legend {items x y} {
-    set n [expr {[llength $items] / 3}]
-    set w [LegendWidth $items]
-    set out "<g class=\"legend\" font-size=\"11\"><rect x=\"$x\" y=\"$y\" width=\"$w\"\
-        height=\"[expr {$n * 16 + 8}]\" fill=\"#fff\" fill-opacity=\"0.85\" stroke=\"#999\"/>\n"
-    set yy [expr {$y + 14}]
+    set w 0
+    foreach {name - -} $items {incr w [ItemWidth $name]}
+    set x [expr {$x - $w}]
+    set out "<g class=\"legend\" font-size=\"11\">\n"
     foreach {name colour style} $items {
         set dash [expr {$style eq "dashed" ? " stroke-dasharray=\"6,4\"" : ""}]
-        append out "<line x1=\"[expr {$x + 6}]\" y1=\"[expr {$yy - 4}]\" x2=\"[expr {$x + 30}]\"\
-            y2=\"[expr {$yy - 4}]\" stroke=\"$colour\" stroke-width=\"2\"$dash/>"
-        append out "<text x=\"[expr {$x + 36}]\" y=\"$yy\">[Esc $name]</text>\n"
-        incr yy 16
+        append out "<line x1=\"$x\" y1=\"[expr {$y - 4}]\" x2=\"[expr {$x + 24}]\"\
+            y2=\"[expr {$y - 4}]\" stroke=\"$colour\" stroke-width=\"2\"$dash/>"
+        append out "<text x=\"[expr {$x + 30}]\" y=\"$y\">[Esc $name]</text>\n"
+        incr x [ItemWidth $name]
     }
     append out "</g>\n"
 }
 
-# ::fivax::svgplot::LegendWidth -- Returns the pixel width of a legend of {name colour style} items.
-proc ::fivax::svgplot::LegendWidth {items} {
-    set n 0
-    foreach {name - -} $items {set n [expr {max($n, [string length $name])}]}
-    expr {46 + 6 * $n}
+# ::fivax::svgplot::ItemWidth -- Returns the pixel width of a legend item named name, with the space after it.
+proc ::fivax::svgplot::ItemWidth {name} {
+    expr {30 + 6 * [string length $name] + 16}
 }
