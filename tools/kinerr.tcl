@@ -90,7 +90,7 @@ proc ::kinerrtool::Blocks {checker path tooling} {
             foreach note [dict get $tooling notes] {
                 lassign $note kind what
                 if {$kind eq "unreadable"} {::fivax::Fail TOOL COMMENT "$path:$n: $what"}
-                puts stderr "kinerr: $path:$n: warning: $what; the table's length is taken"
+                puts stderr "kinerr: $path:$n: warning: $what; computed with [dict get $tooling length]"
             }
             if {[dict get $tooling length] ne $length} {
                 set length [dict get $tooling length]
@@ -137,6 +137,39 @@ proc ::kinerrtool::Report {what path rows lines} {
         [lindex $at 1] [expr {[lindex $sum 1] / $n}]]
 }
 
+# ::kinerrtool::ReportTools --
+#	Prints the figures of each tool {number length} of toolOf (one per
+#	row) apart, in the order they come, when there are several.
+proc ::kinerrtool::ReportTools {path rows lines toolOf} {
+    set groups {}
+    foreach tool $toolOf {
+        if {$tool ni $groups} {lappend groups $tool}
+    }
+    if {[llength $groups] < 2} return
+    foreach tool $groups {
+        lassign $tool number length
+        set idx [lsearch -all -exact $toolOf $tool]
+        Report [format "tool %s (length %s, %d blocks): " [expr {$number eq "" ? "?" : $number}] \
+            [::fivax::num::fixed $length 3] [llength $idx]] \
+            $path [lmap i $idx {lindex $rows $i}] [lmap i $idx {lindex $lines $i}]
+    }
+}
+
+# ::kinerrtool::Plot --
+#	Returns the SVG of the rows at NC lines of the file at path: the tip
+#	error (mm) and the axis error (deg) each in its own panel, along the
+#	NC lines, the worst lines marked.
+proc ::kinerrtool::Plot {title path rows lines} {
+    set panels {}
+    foreach k {3 4} what {"tip error dpos" "axis error dangle"} unit {mm deg} {
+        set ys [lmap r $rows {lindex $r $k}]
+        lappend panels [list -ylabel "$what ($unit)" -series [list [list "$what ($unit)" $lines $ys]] \
+            -marks [::fivax::svgplot worst $lines $ys 3 "line "]]
+    }
+    ::fivax::svgplot panels -title $title -xlabel "NC line of the cutting block ([file tail $path])" \
+        -panels $panels
+}
+
 # ::kinerrtool::main -- Parses argv, computes and reports the errors.
 proc ::kinerrtool::main {argv} {
     lassign [ParseArgs $argv] opts path
@@ -161,20 +194,7 @@ proc ::kinerrtool::main {argv} {
             [::fivax::num::deg [lindex $errors 0]] [lindex $names 1] \
             [::fivax::num::deg [lindex $errors 1]] [dict get $opts -mode] [llength $rows]]
         Report "" $path $rows $lines
-        # each tool apart (in the order they come) when there are several
-        set groups {}
-        foreach tool $toolOf {
-            if {$tool ni $groups} {lappend groups $tool}
-        }
-        if {[llength $groups] > 1} {
-            foreach tool $groups {
-                lassign $tool number length
-                set idx [lsearch -all -exact $toolOf $tool]
-                Report [format "tool %s (length %s, %d blocks): " \
-                    [expr {$number eq "" ? "?" : $number}] [::fivax::num::fixed $length 3] [llength $idx]] \
-                    $path [lmap i $idx {lindex $rows $i}] [lmap i $idx {lindex $lines $i}]
-            }
-        }
+        ReportTools $path $rows $lines $toolOf
     }
     try {
         if {[dict get $opts -csv] ne ""} {
@@ -186,20 +206,10 @@ proc ::kinerrtool::main {argv} {
             if {![dict get $opts -quiet]} {puts "kinerr: wrote [dict get $opts -csv]"}
         }
         if {[dict get $opts -svg] ne ""} {
-            # the tip error in mm and the axis error in degrees each on its own
-            # axis, along the NC lines, the worst lines marked
-            set panels {}
-            foreach k {3 4} what {"tip error dpos" "axis error dangle"} unit {mm deg} {
-                set ys [lmap r $rows {lindex $r $k}]
-                lappend panels [list -ylabel "$what ($unit)" -series [list [list "$what ($unit)" $lines $ys]] \
-                    -marks [::fivax::svgplot worst $lines $ys 3 "line "]]
-            }
-            set svg [::fivax::svgplot panels \
-                -title [format "Rotary-axis error on %s: %s %g deg, %s %g deg (%s)" \
-                    [dict get $machine name] [lindex $names 0] [::fivax::num::deg [lindex $errors 0]] \
-                    [lindex $names 1] [::fivax::num::deg [lindex $errors 1]] [dict get $opts -mode]] \
-                -xlabel "NC line of the cutting block ([file tail $path])" -panels $panels]
-            ::fivax::svgplot write [dict get $opts -svg] $svg
+            set title [format "Rotary-axis error on %s: %s %g deg, %s %g deg (%s)" \
+                [dict get $machine name] [lindex $names 0] [::fivax::num::deg [lindex $errors 0]] \
+                [lindex $names 1] [::fivax::num::deg [lindex $errors 1]] [dict get $opts -mode]]
+            ::fivax::svgplot write [dict get $opts -svg] [Plot $title $path $rows $lines]
             if {![dict get $opts -quiet]} {puts "kinerr: wrote [dict get $opts -svg]"}
         }
     } trap {POSIX} {msg} {
