@@ -247,7 +247,7 @@ proc ::fivax::dryrun::ReadLine {checker line n} {
         Event $n unreadable "$kind not understood: $word"
     }
     set moved [dict get $blk moved]
-    Words $checker [dict get $blk words] $moved $n
+    Words [dict get $blk words] $moved $n
     if {[dict get $blk end] && !$R(end)} {set R(end) $n}
     set space [dict get $blk space]
     if {$space ne $R(space)} {
@@ -345,7 +345,7 @@ proc ::fivax::dryrun::ArcPoses {checker arc words pose} {
 #	Follows the state words of a block (words: {letter value} pairs;
 #	moved: its axis letters) at line n: units, work offset, length
 #	compensation, spindle, coolant (tool changes: Tool).
-proc ::fivax::dryrun::Words {checker words moved n} {
+proc ::fivax::dryrun::Words {words moved n} {
     variable R
     set h 0
     set on ""
