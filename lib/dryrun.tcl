@@ -46,7 +46,7 @@
 #	plane) is seen at its end only.
 
 namespace eval ::fivax::dryrun {
-    namespace export run format tools
+    namespace export run format tools tooling toolStep progress
     namespace ensemble create -prefixes 0
     variable Options {
         {-controller {maybe word} {} NAME "dialect of the NC text (default: the machine's controller)"}
@@ -86,6 +86,10 @@ namespace eval ::fivax::dryrun {
     variable depthClear 1.0
     # Two tool lengths differ when they differ by more than this (mm).
     variable lengthTol 0.0005
+    # The progress command (see progress) and how many lines or moves
+    # apart it runs.
+    variable progress ""
+    variable progressEvery 256
     # R: the state of one run (see run).
     variable R
 }
@@ -97,6 +101,8 @@ namespace eval ::fivax::dryrun {
 proc ::fivax::dryrun::run {machine lines args} {
     variable Options
     variable R
+    variable progress
+    variable progressEvery
     set opts [::fivax::opts::parse $Options $args "dryrun run"]
     CheckTools [dict get $opts -tools]
     array unset R
@@ -104,18 +110,22 @@ proc ::fivax::dryrun::run {machine lines args} {
     if {$controller eq ""} {set controller [dict get $machine controller]}
     array set R [list machine $machine opts $opts events {} moves {} \
         klartext [expr {$controller eq "heidenhain"}] units [dict get $machine units] \
-        offset "" pending "" tool "" length [dict get $machine tool_length] radius 0.0 \
+        offset "" length [dict get $machine tool_length] radius 0.0 \
         comp 0 spindle 0 speed "" coolant 0 spindleSaid 0 end 0 endSaid 0 \
-        pose "" joints "" space joint model ""]
+        pose "" joints "" space joint model "" progress $progress \
+        every [expr {$progress eq "" ? 1 << 62 : $progressEvery}] followed 0 toFollow 0]
     set checker [::fivax::verify reader $machine -table-offset [dict get $opts -table-offset] \
         -controller $controller]
+    set R(tooling) [tooling [dict get $opts -tools] [dict get $opts -tool-length]]
     if {[dict get $opts -tool-length] ne ""} {set R(length) [dict get $opts -tool-length]}
     try {
         SetLength $checker $R(length)
         set n 0
+        set total [llength $lines]
         foreach line $lines {
             incr n
             ReadLine $checker $line $n
+            if {$n % $R(every) == 0} {{*}$progress "lines read" $n $total}
         }
     } finally {
         $checker destroy
@@ -123,6 +133,29 @@ proc ::fivax::dryrun::run {machine lines args} {
     if {!$R(end)} {Event $n end "the program never ends (no M2, M30 or END PGM)"}
     Geometry
     lsort -integer -index 0 $R(events)
+}
+
+# ::fivax::dryrun::progress --
+#	Sets the command prefix that runs from now on call with what ("lines
+#	read", then "moves followed"), how many so far and of how many, every
+#	256 lines or moves (for a progress display: the moves, followed
+#	through the stock once the program is read, take most of the time);
+#	"" (the default) turns it off. Returns the previous one.
+proc ::fivax::dryrun::progress {cmd} {
+    variable progress
+    set old $progress
+    set progress $cmd
+    return $old
+}
+
+# ::fivax::dryrun::Followed --
+#	Counts one more move followed through the stock; calls the progress
+#	command every R(every) moves.
+proc ::fivax::dryrun::Followed {} {
+    variable R
+    if {[incr R(followed)] % $R(every) == 0} {
+        {*}$R(progress) "moves followed" $R(followed) $R(toFollow)
+    }
 }
 
 # ::fivax::dryrun::format -- Returns the events as lines "FILE:LINE: kind: what".
@@ -196,8 +229,11 @@ proc ::fivax::dryrun::Event {n kind what} {
 proc ::fivax::dryrun::ReadLine {checker line n} {
     variable R
     set blk [$checker read $line]
-    foreach c [dict get $blk comments] {
-        if {[regexp {^\s*FIVAX TOOL\M} $c]} {ToolComment $checker $c $n}
+    # (the tool follower changes at T and M words and comments only)
+    if {[llength [dict get $blk comments]] || [string first T $line] >= 0
+            || [string first M $line] >= 0} {
+        set R(tooling) [toolStep $R(tooling) $blk]
+        Tool $checker $n
     }
     if {![dict get $blk block]} {
         if {[dict get $blk end] && !$R(end)} {set R(end) $n}
@@ -211,7 +247,7 @@ proc ::fivax::dryrun::ReadLine {checker line n} {
         Event $n unreadable "$kind not understood: $word"
     }
     set moved [dict get $blk moved]
-    Words $checker [dict get $blk words] $moved $n
+    Words [dict get $blk words] $moved $n
     if {[dict get $blk end] && !$R(end)} {set R(end) $n}
     set space [dict get $blk space]
     if {$space ne $R(space)} {
@@ -307,9 +343,9 @@ proc ::fivax::dryrun::ArcPoses {checker arc words pose} {
 
 # ::fivax::dryrun::Words --
 #	Follows the state words of a block (words: {letter value} pairs;
-#	moved: its axis letters) at line n: units, work offset, tool change,
-#	length compensation, spindle, coolant.
-proc ::fivax::dryrun::Words {checker words moved n} {
+#	moved: its axis letters) at line n: units, work offset, length
+#	compensation, spindle, coolant (tool changes: Tool).
+proc ::fivax::dryrun::Words {words moved n} {
     variable R
     set h 0
     set on ""
@@ -324,14 +360,6 @@ proc ::fivax::dryrun::Words {checker words moved n} {
             }
             H {set h 1}
             D {set R(comp) [expr {$v != 0}]}
-            T {
-                set R(pending) [expr {int($v)}]
-                if {$R(klartext)} {
-                    # TOOL CALL: tool change, length compensation on
-                    ToolChange $checker $n
-                    set R(comp) 1
-                }
-            }
             S {
                 if {$R(speed) ne $v} {set R(spindleSaid) 0}
                 set R(speed) $v
@@ -340,7 +368,6 @@ proc ::fivax::dryrun::Words {checker words moved n} {
                 switch -exact -- [expr {int($v)}] {
                     3 - 4 {set R(spindle) 1; set R(spindleSaid) 0}
                     5 {set R(spindle) 0}
-                    6 {ToolChange $checker $n}
                     7 - 8 {set R(coolant) 1}
                     9 {set R(coolant) 0}
                 }
@@ -359,22 +386,22 @@ proc ::fivax::dryrun::Words {checker words moved n} {
     }
 }
 
-# ::fivax::dryrun::ToolChange --
-#	The pending tool goes into the spindle at line n (which stops): its
-#	length and radius from the tool table when it has them.
-proc ::fivax::dryrun::ToolChange {checker n} {
+# ::fivax::dryrun::Tool --
+#	Follows the tool the follower R(tooling) saw at line n: its notes as
+#	events, a tool call (the spindle stops; Klartext's TOOL CALL switches
+#	length compensation on), its length and radius.
+proc ::fivax::dryrun::Tool {checker n} {
     variable R
-    set R(tool) $R(pending)
-    set R(spindle) 0
-    set R(spindleSaid) 0
-    set tools [dict get $R(opts) -tools]
-    if {$R(tool) ne "" && [dict exists $tools $R(tool)]} {
-        set entry [dict get $tools $R(tool)]
-        if {[dict exists $entry radius]} {set R(radius) [dict get $entry radius]}
-        if {[dict exists $entry length] && [dict get $R(opts) -tool-length] eq ""} {
-            SetLength $checker [dict get $entry length]
-        }
+    foreach note [dict get $R(tooling) notes] {Event $n {*}$note}
+    if {[dict get $R(tooling) called]} {
+        set R(spindle) 0
+        set R(spindleSaid) 0
+        if {$R(klartext)} {set R(comp) 1}
     }
+    set len [dict get $R(tooling) length]
+    if {$len ne "" && $len != $R(length)} {SetLength $checker $len}
+    set rad [dict get $R(tooling) radius]
+    if {$rad ne ""} {set R(radius) $rad}
 }
 
 # ::fivax::dryrun::SetLength -- Reads on with a tool of length len (mm).
@@ -385,30 +412,78 @@ proc ::fivax::dryrun::SetLength {checker len} {
     set R(model) [$checker model]
 }
 
-# ::fivax::dryrun::ToolComment --
-#	Reads the comment "FIVAX TOOL n LENGTH L ?RADIUS R?" at line n: the
-#	tool's length and radius the program was computed for (the tool
-#	table, then -tool-length, take precedence; a tool table length that
-#	differs is a toollength event).
-proc ::fivax::dryrun::ToolComment {checker text n} {
-    variable R
+# ::fivax::dryrun::tooling --
+#	Returns a new tool follower (a dict, see toolStep) for the tool table
+#	tools (as tools returns) and override (a tool length that wins over
+#	both the table and the program, or ""). The dry run,
+#	tools/verify.tcl and tools/kinerr.tcl follow the tool in the spindle
+#	with it.
+proc ::fivax::dryrun::tooling {tools override} {
+    dict create tools $tools override $override pending "" tool "" length $override radius "" \
+        called 0 notes {}
+}
+
+# ::fivax::dryrun::toolStep --
+#	Returns the follower state after one NC line read by a verify Checker
+#	(blk: its read dict): its tool calls (M6 calls the last T; the
+#	Checker reads Klartext's TOOL CALL n as T n M6), then
+#	its comments "FIVAX TOOL n LENGTH L ?RADIUS R?" (the tool the
+#	program's X Y Z were computed for). Keys:
+#	  tool    the tool in the spindle: the last called or commented (""
+#	          before any)
+#	  length  the tool length to compute with: the override, else the
+#	          tool table's length of the tool called or commented, else
+#	          the comment's; "" while none is known (keep the last one)
+#	  radius  the tool table's radius, else the comment's; "" likewise
+#	  called  1 when the line called a tool into the spindle
+#	  notes   this line's {kind what}: "unreadable" (a FIVAX TOOL comment
+#	          not understood), "toollength" (the comment's length differs
+#	          from the tool table's)
+proc ::fivax::dryrun::toolStep {state blk} {
+    variable lengthTol
+    dict set state notes {}
+    dict set state called 0
+    set tools [dict get $state tools]
+    set override [dict get $state override]
+    foreach {letter v} [dict get $blk words] {
+        if {$letter eq "T" && [set t [::fivax::num::parse $v]] ne ""} {
+            dict set state pending [expr {int($t)}]
+        }
+        if {$letter eq "M" && $v == 6} {
+            dict set state called 1
+            dict set state tool [dict get $state pending]
+            set entry [TableEntry $tools [dict get $state pending]]
+            if {[dict exists $entry radius]} {dict set state radius [dict get $entry radius]}
+            if {[dict exists $entry length] && $override eq ""} {
+                dict set state length [dict get $entry length]
+            }
+        }
+    }
     set num {([-+]?[0-9]*\.?[0-9]+)}
-    if {![regexp "^\\s*FIVAX TOOL (\\d+) LENGTH ${num}(?: RADIUS ${num})?\\s*\$" $text -> tool len rad]} {
-        Event $n unreadable "tool comment not understood: $text"
-        return
+    foreach c [dict get $blk comments] {
+        if {![regexp {^\s*FIVAX TOOL\M} $c]} continue
+        if {![regexp "^\\s*FIVAX TOOL (\\d+) LENGTH ${num}(?: RADIUS ${num})?\\s*\$" $c -> tool len rad]} {
+            dict lappend state notes [list unreadable "tool comment not understood: $c"]
+            continue
+        }
+        set tool [scan $tool %d]
+        dict set state tool $tool
+        set entry [TableEntry $tools $tool]
+        set x [::fivax::num::parse $len]
+        if {[dict exists $entry length] && abs([dict get $entry length] - $x) > $lengthTol} {
+            dict lappend state notes [list toollength "tool $tool: the program was computed for length\
+                $len, the tool table has [dict get $entry length]"]
+        }
+        if {$rad ne "" && ![dict exists $entry radius]} {dict set state radius [::fivax::num::parse $rad]}
+        if {![dict exists $entry length] && $override eq ""} {dict set state length $x}
     }
-    set tool [scan $tool %d]
-    set entry {}
-    set tools [dict get $R(opts) -tools]
-    if {[dict exists $tools $tool]} {set entry [dict get $tools $tool]}
-    if {[dict exists $entry length] && abs([dict get $entry length] - $len) > $::fivax::dryrun::lengthTol} {
-        Event $n toollength "tool $tool: the program was computed for length $len,\
-            the tool table has [dict get $entry length]"
-    }
-    if {$rad ne "" && ![dict exists $entry radius]} {set R(radius) [expr {double($rad)}]}
-    if {![dict exists $entry length] && [dict get $R(opts) -tool-length] eq ""} {
-        SetLength $checker [expr {double($len)}]
-    }
+    return $state
+}
+
+# ::fivax::dryrun::TableEntry -- Returns the tool table's entry of tool ("" or a number), {} when none.
+proc ::fivax::dryrun::TableEntry {tools tool} {
+    if {$tool ne "" && [dict exists $tools $tool]} {return [dict get $tools $tool]}
+    return {}
 }
 
 # ::fivax::dryrun::Geometry --
@@ -440,15 +515,23 @@ proc ::fivax::dryrun::Geometry {} {
     set R(cutterToTable) $tableGiven
     set R(silent) 0
     set R(final) 0
+    # (the moves to follow: every one, and without -stock the cuts first)
+    set R(toFollow) [llength $R(moves)]
     if {$R(estimated)} {
         # the part as the program leaves it: every cut first, then the
         # uncut cells reached from the map's edge are air, those enclosed
         # by cuts (a boss) the highest near cut's level
+        foreach move $R(moves) {
+            if {[lindex $move 0] in {cut hole}} {incr R(toFollow)}
+        }
         LocalTops $tips
         set R(H0) $R(H)
         set R(silent) 1
         foreach move $R(moves) {
-            if {[lindex $move 0] in {cut hole}} {Move $move}
+            if {[lindex $move 0] in {cut hole}} {
+                Followed
+                Move $move
+            }
         }
         set R(silent) 0
         set R(final) 1
@@ -456,6 +539,7 @@ proc ::fivax::dryrun::Geometry {} {
     }
     Blocks
     foreach move $R(moves) {
+        Followed
         set kind [lindex $move 0]
         if {$kind eq "switch"} {
             lassign $move - n pose what

@@ -491,7 +491,7 @@ oo::class create ::fivax::verify::Checker {
 
     # Returns the Klartext line as the ISO words the reader follows: L
     # (FMAX: G0, else G1, M91: G53, R0 left out), C with DR-/DR+ (G2/G3,
-    # the centre from the last CC as I J), TOOL CALL (T, S), FUNCTION
+    # the centre from the last CC as I J), TOOL CALL (T M6, S), FUNCTION
     # TCPM (G43.4) and FUNCTION RESET TCPM (G49), STOP (M0), BEGIN PGM's
     # units (G21 MM, G20 INCH); CC, PLANE SPATIAL and PLANE RESET set the
     # state and give no block; END PGM and cycle 9 are no blocks (read
@@ -557,7 +557,8 @@ oo::class create ::fivax::verify::Checker {
             return [join $iso]
         }
         if {[regexp {^TOOL CALL\s*(\d*)\s*[XYZ]?\s*(S\d+)?} $body -> tool speed]} {
-            return [string trim "[expr {$tool ne "" ? "T$tool" : ""}] $speed"]
+            # (a tool change: T with M6, as in ISO)
+            return [string trim "[expr {$tool ne "" ? "T$tool M6" : ""}] $speed"]
         }
         if {[regexp {^FUNCTION TCPM\M} $body]} {return G43.4}
         if {[regexp {^FUNCTION RESET TCPM\M} $body]} {return G49}

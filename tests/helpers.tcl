@@ -365,3 +365,66 @@ proc testProduct {args} {
     }
     return $R
 }
+
+# twoToolPrograms --
+#	Posts, on hh-tilt45 in joint mode (-tcp 0: the head's X Y Z depend on
+#	the tool length), the bundled sim5.cls path twice, with tool 1 (length
+#	75) as it is and then with tool 2 (length 140, operation SWARF_B), and
+#	that second operation alone, into the temporary directory. Returns the
+#	paths {two second} of the two NC programs (name prefix: prefix).
+proc twoToolPrograms {prefix} {
+    set f [open [file join $::fivaxRoot tests data sim5.cls]]
+    set lines [split [string trim [read $f]] \n]
+    close $f
+    set second [concat {"TOOL PATH/SWARF_B,TOOL,BALL6" "TLDATA/MILL,6.0000,3.0000,140.0000,0.0000,0.0000"
+        "LOAD/TOOL,2,ADJUST,2"} [lrange $lines 3 end]]
+    set out {}
+    foreach {name cl} [list two [concat $lines $second] second $second] {
+        set path [makeFile [join $cl \n] $prefix-$name.cls]
+        set nc [file join [temporaryDirectory] $prefix-$name.nc]
+        exec [info nameofexecutable] [file join $::fivaxRoot tools replay.tcl] -quiet \
+            -machine [file join $::fivaxRoot machines hh-tilt45.tcl] -tcp 0 -o $nc $path 2>@1
+        file delete $path [file rootname $nc].log
+        lappend out $nc
+    }
+    return $out
+}
+
+# svgSeries --
+#	Returns {xs ys starts} of the series (class series) named name in the
+#	SVG text of a chart (tools/lib/svgplot.tcl): its points mapped back to
+#	data values through the tick labels (xtick, ytick) of its panel, and
+#	the indices of the points where a subpath starts (M: a break).
+proc svgSeries {text name} {
+    package require tdom
+    set doc [dom parse $text]
+    try {
+        set node ""
+        foreach n [$doc selectNodes {//*[@class='series']}] {
+            if {[$n getAttribute data-name] eq $name} {set node $n}
+        }
+        if {$node eq ""} {return "no series $name"}
+        set panel [$node parentNode]
+        foreach axis {x y} {
+            set ticks [lmap t [$panel selectNodes ".//*\[@class='${axis}tick'\]"] {
+                list [$t getAttribute $axis] [$t text]
+            }]
+            lassign [lindex $ticks 0] p0 v0
+            lassign [lindex $ticks end] p1 v1
+            set map($axis) [list $p0 $v0 [expr {($v1 - $v0) / double($p1 - $p0)}]]
+        }
+        set xs {}
+        set ys {}
+        set starts {}
+        foreach {- pen px py} [regexp -all -inline {([ML])([-0-9.]+),([-0-9.]+)} [$node getAttribute d]] {
+            if {$pen eq "M"} {lappend starts [llength $xs]}
+            foreach axis {x y} p [list $px $py] {
+                lassign $map($axis) p0 v0 k
+                lappend ${axis}s [expr {$v0 + ($p - $p0) * $k}]
+            }
+        }
+        list $xs $ys $starts
+    } finally {
+        $doc delete
+    }
+}

@@ -34,8 +34,12 @@
 #	program (and its log) an earlier run left there, and says so.
 #
 #	Progress. When standard error is a terminal (and without -quiet) a
-#	progress line there, at most twice a second: records, percent of the
-#	input bytes, rate and the time left.
+#	progress line there, at most twice a second, for each stage: posting
+#	(records, percent of the input bytes, rate, the time left to post and
+#	whether the dry run follows), then the dry run of the written program
+#	(lines read, moves followed through the stock: it takes about as long
+#	as posting). The time left is estimated from the rate of the later
+#	half of the stage so far (see Left).
 
 package require Tcl 8.6
 
@@ -54,6 +58,9 @@ namespace eval ::replay {
     variable bufferSize 65536
     # Shortest time between two progress lines (ms).
     variable progressMs 500
+    # The time left is estimated from the progress of the later half of
+    # the stage so far, over this much at least (ms).
+    variable rateMs 5000
     # Smallest CL file (bytes) -check-process auto checks in a second
     # process (about 15k records: starting it takes about 0.1 s; the -help
     # text says 1 MB).
@@ -76,7 +83,7 @@ proc ::replay::Reset {} {
     array unset R
     array set R {
         target "" stale {} tmp "" log "" out "" sink "" guard "" held "" discard 0 broken ""
-        rt "" shown 0 start 0 last 0 size ""
+        rt "" shown 0 start 0 last 0 size "" samples {} stage "" stageStart 0 dryrun 0
     }
 }
 ::replay::Reset
@@ -424,32 +431,97 @@ proc ::replay::Listing {text} {
 
 # ::replay::Tick --
 #	The CL reader's progress command (records read, line, bytes read):
-#	shows the progress line when R(progressMs) has passed since the last.
+#	shows the posting stage's progress line when R(progressMs) has passed
+#	since the last.
 proc ::replay::Tick {records line bytes} {
     variable R
-    variable progressMs
-    set now [clock milliseconds]
-    if {$now - $R(last) < $progressMs} return
-    set R(last) $now
-    ShowProgress [ProgressText $records $bytes $R(size) [expr {$now - $R(start)}]]
+    if {![Due]} return
+    set frac ""
+    if {$R(size) ne "" && $R(size) > 0} {set frac [expr {min(1.0, double($bytes) / $R(size))}]}
+    set ms [Sample posting $frac]
+    ShowProgress [ProgressText $records $frac $ms [Left $R(samples)] $R(dryrun)]
 }
 
 # ::replay::ProgressText --
-#	Returns the progress line for records read, bytes of size read (size
-#	"" when unknown) after ms milliseconds: records, percent, rate, time left.
-proc ::replay::ProgressText {records bytes size ms} {
-    set s [expr {max($ms, 1) / 1000.0}]
+#	Returns the posting stage's progress line for records read, the
+#	fraction frac of the input bytes read ("" when the size is unknown)
+#	after ms milliseconds, s seconds left ("" when unknown), dryrun 1
+#	when the dry run follows.
+proc ::replay::ProgressText {records frac ms s dryrun} {
     set text [format "fivax: %d records" $records]
-    if {$size ne "" && $size > 0 && $bytes ne ""} {
-        set frac [expr {min(1.0, double($bytes) / $size)}]
-        append text [format ", %d%%" [expr {int($frac * 100)}]]
+    if {$frac ne ""} {append text [format ", %d%%" [expr {int($frac * 100)}]]}
+    append text [format ", %d records/s" [expr {round($records * 1000.0 / max($ms, 1))}]]
+    append text [LeftText $s [expr {$dryrun ? " to post, then the dry run" : ""}]]
+}
+
+# ::replay::DryRunTick --
+#	The dry run's progress command (what: lines read, moves followed;
+#	done of total): shows its progress line as Tick does.
+proc ::replay::DryRunTick {what done total} {
+    variable R
+    if {![Due]} return
+    set frac [expr {double($done) / max($total, 1)}]
+    Sample "dry run $what" $frac
+    ShowProgress [format "fivax: dry run: %d of %d %s, %d%%%s" $done $total $what \
+        [expr {int($frac * 100)}] [LeftText [Left $R(samples)] ""]]
+}
+
+# ::replay::Due --
+#	Returns 1 (and notes the time) when R(progressMs) has passed since the
+#	last progress line.
+proc ::replay::Due {} {
+    variable R
+    variable progressMs
+    set now [clock milliseconds]
+    if {$now - $R(last) < $progressMs} {return 0}
+    set R(last) $now
+    return 1
+}
+
+# ::replay::Sample --
+#	Adds the sample {ms frac} (ms since the stage began) of stage (a new
+#	stage starts its samples anew); returns ms. frac "": none.
+proc ::replay::Sample {stage frac} {
+    variable R
+    set now [clock milliseconds]
+    if {$stage ne $R(stage)} {
+        set R(stage) $stage
+        set R(stageStart) [expr {$stage eq "posting" ? $R(start) : $now}]
+        set R(samples) {{0 0.0}}
     }
-    append text [format ", %d records/s" [expr {round($records / $s)}]]
-    if {[info exists frac] && $frac > 0} {
-        set left [expr {round($s * (1.0 - $frac) / $frac)}]
-        append text [format ", %d:%02d left" [expr {$left / 60}] [expr {$left % 60}]]
+    set ms [expr {$now - $R(stageStart)}]
+    if {$frac ne ""} {lappend R(samples) [list $ms $frac]}
+    return $ms
+}
+
+# ::replay::Left --
+#	Returns the seconds left of a stage from its progress samples {ms
+#	frac} (ms since it began, the fraction done; oldest first), "" while
+#	unknown: the rest at the rate of the later half of the time so far
+#	(at least rateMs). The whole stage's average rate misjudged it for
+#	long: the reader runs ahead of the work while the planner fills its
+#	window, and a program's operations do not cost alike per byte (a fast
+#	first half made 4:48 look like 1:11).
+proc ::replay::Left {samples} {
+    variable rateMs
+    lassign [lindex $samples end] ms frac
+    if {$frac eq "" || $frac <= 0 || $ms <= 0} {return ""}
+    set from [expr {$ms - max($rateMs, $ms / 2.0)}]
+    # the last sample at or before from (the first when none is)
+    set base [lindex $samples 0]
+    foreach sample $samples {
+        if {[lindex $sample 0] > $from} break
+        set base $sample
     }
-    return $text
+    lassign $base ms0 frac0
+    if {$frac <= $frac0 || $ms <= $ms0} {return ""}
+    expr {round((1.0 - $frac) * ($ms - $ms0) / ($frac - $frac0) / 1000.0)}
+}
+
+# ::replay::LeftText -- Returns ", M:SS left" and then tail for seconds s, "" when s is "".
+proc ::replay::LeftText {s tail} {
+    if {$s eq ""} {return ""}
+    format ", %d:%02d left%s" [expr {$s / 60}] [expr {$s % 60}] $tail
 }
 
 # ::replay::ShowProgress -- Writes text over the progress line on stderr.
@@ -543,8 +615,9 @@ proc ::replay::PostSettings {postFile defFile given} {
 #	runs in a second process (tools/lib/checkproc.tcl); when the post
 #	stops on an error of its own, an error that process found in an
 #	earlier block is reported instead (the post in one process would
-#	have stopped there).
-proc ::replay::Post {postFile defFile given clsf chan out process} {
+#	have stopped there). With progress 1 the post's dry run shows its
+#	progress (DryRunTick).
+proc ::replay::Post {postFile defFile given clsf chan out process progress} {
     variable root
     set globals {}
     if {$out ne ""} {
@@ -555,6 +628,12 @@ proc ::replay::Post {postFile defFile given clsf chan out process} {
     }
     set rt [Runtime $postFile $defFile $given -channel $chan -listing ::replay::Listing \
         -globals $globals]
+    if {$progress} {
+        # the dry run at the end of the program (in the post's interpreter)
+        # shows its progress too
+        [$rt interp] alias ::replay_dryrun_tick ::replay::DryRunTick
+        [$rt interp] eval {::fivax::dryrun::progress ::replay_dryrun_tick}
+    }
     if {$process} {
         set child [$rt interp]
         $child eval [list source [file join $root tools lib checkproc.tcl]]
@@ -633,9 +712,9 @@ proc ::replay::main {argv} {
         CheckTarget -log [dict get $settings -log] $clsf $machineFile
     }
     Say "fivax: posting for machine [file normalize $machineFile]"
-    if {![dict get $opts -quiet] && [Terminal stderr]} {
-        ::fivax::clsf::progress ::replay::Tick
-    }
+    set progress [expr {![dict get $opts -quiet] && [Terminal stderr]}]
+    if {$progress} {::fivax::clsf::progress ::replay::Tick}
+    set R(dryrun) [expr {[dict get $settings -dryrun] eq "on"}]
     set R(start) [clock milliseconds]
     set R(last) $R(start)
     if {$clsf ne "-" && [file isfile $clsf]} {set R(size) [file size $clsf]}
@@ -654,7 +733,7 @@ proc ::replay::main {argv} {
         -buffersize $bufferSize
     try {
         set stats [Post $postFile $defFile $given $clsf $R(sink) $out \
-            [CheckProcess [dict get $opts -check-process] $clsf]]
+            [CheckProcess [dict get $opts -check-process] $clsf] $progress]
         if {[dict exists $stats limitViolations] && [dict get $stats limitViolations] > 0} {
             # A safety net: the checker refuses such a value when it is written.
             error "[dict get $stats limitViolations] values outside the machine's limits; no NC file written"

@@ -42,14 +42,14 @@ namespace eval ::verifytool {
         {-mid-tol {maybe real min 0} {} MM "tip tolerance inside blocks (default: -tol)"}
         {-mid-atol {maybe real min 0} {} DEG "tool axis tolerance inside blocks (default: -atol)"}
         {-controller {maybe word} {} NAME "dialect of the NC text (default: the machine's controller)"}
-        {-tool-length {maybe real} {} MM "tool length of the tools the CL (-cl) gives none: a CL TLDATA wins, as in the post (default: the program's FIVAX TOOL comments, else the machine's tool_length)"}
+        {-tool-length {maybe real} {} MM "tool length of every tool the CL (-cl) gives none (a CL TLDATA wins, as in the post; default: each tool's from -tools, else the program's FIVAX TOOL comments, else the machine's tool_length)"}
         {-table-offset {maybe vec3} {} "X Y Z" "workpiece-frame position of the table reference point"}
         {-arc-tol {real gt 0} 0.002 MM "chord tolerance of CL arcs (the post's -arc-tol)"}
         {-window {int min 1} 32 N "CL segments searched ahead of the last match"}
         {-dryrun {enum on off} on WHEN "machine dry run: spindle, rapids and bodies through the stock, length compensation, modes, tool lengths, program end"}
         {-stock {maybe reals 6} {} "X0 Y0 Z0 X1 Y1 Z1"
             "the dry run's stock box in the workpiece frame (default: the part as the program's own cuts show it)"}
-        {-tools text {} FILE "tool table for the dry run: lines \"T<n> LENGTH <L> ?RADIUS <R>?\" (# comments)"}
+        {-tools text {} FILE "tool table: lines \"T<n> LENGTH <L> ?RADIUS <R>?\" (# comments): each tool's length for the kinematics and the dry run"}
         {-csv text {} FILE "write one row per block: line, op, motion, axes, back-plotted tip and axis, deviations"}
         {-o text {} FILE "write the back-plotted tip path and tool axis as a CLSF"}
         {-svg text {} PREFIX "write PREFIX-axes.svg, PREFIX-deviation.svg and PREFIX-path.svg"}
@@ -92,15 +92,17 @@ proc ::verifytool::Max {opVar key value where} {
 }
 
 # ::verifytool::Run --
-#	Checks the NC file path with the options on machine; returns {ops
-#	rows problems warnings names}: the operation statistics, one row per
-#	motion block (see Csv), the failed checks, the counts of words not
-#	understood by kind, and the rotary names (chain order).
-proc ::verifytool::Run {opts path machine} {
+#	Checks the NC file path with the options on machine and the tool
+#	table tools; returns {ops rows problems warnings names lines}: the
+#	operation statistics, one row per motion block (see Csv), the failed
+#	checks, the counts of words not understood by kind, the rotary names
+#	(chain order) and the file's lines.
+proc ::verifytool::Run {opts path machine tools} {
     variable S
     array unset S
     array set S [list opts $opts path $path machine $machine ops {} op [NewOp program] lines {} \
-        opIndex -1 clPoints {} clLength "" cursor 0 prev {} cutU "" breakU "" rows {} warnings {} \
+        opIndex -1 clPoints {} clLength "" length "" cursor 0 prev {} cutU "" breakU "" rows {} \
+        warnings {} tooling [::fivax::dryrun tooling $tools [dict get $opts -tool-length]] \
         names [lmap a [dict get $machine chain] {dict get $a name}] \
         rollover [lmap a [dict get $machine chain] {dict get $a rollover}] cl {}]
     set S(checker) [::fivax::verify create $machine -table-offset [dict get $opts -table-offset] \
@@ -109,7 +111,7 @@ proc ::verifytool::Run {opts path machine} {
         set S(cl) [::fivax::clpath read [dict get $opts -cl] [dict get $opts -msys] \
             [dict get $opts -arc-tol] [dict get $machine units]]
     }
-    $S(checker) setTool [dict get $opts -tool-length]
+    SetLength
     set lineNo 0
     set chan [::fivax::nctool open $path]
     try {
@@ -131,20 +133,10 @@ proc ::verifytool::Run {opts path machine} {
 }
 
 # ::verifytool::DryRun --
-#	Returns the dry run's events of the NC lines on machine as lines
-#	"FILE:LINE: kind: what" (none with -dryrun off).
-proc ::verifytool::DryRun {opts path machine lines} {
+#	Returns the dry run's events of the NC lines on machine with the tool
+#	table tools as lines "FILE:LINE: kind: what" (none with -dryrun off).
+proc ::verifytool::DryRun {opts path machine lines tools} {
     if {[dict get $opts -dryrun] eq "off"} {return {}}
-    set tools {}
-    if {[dict get $opts -tools] ne ""} {
-        set file [dict get $opts -tools]
-        set chan [open $file r]
-        try {
-            set tools [::fivax::dryrun tools [read $chan] $file]
-        } finally {
-            close $chan
-        }
-    }
     set args [list -tools $tools -controller [dict get $opts -controller] \
         -table-offset [dict get $opts -table-offset] -tool-length [dict get $opts -tool-length] \
         -stock [dict get $opts -stock]]
@@ -157,15 +149,18 @@ proc ::verifytool::Line {line where n} {
     set blk [$S(checker) read $line]
     foreach c [dict get $blk comments] {
         if {[regexp {^\s*OPERATION\s+(.*?)\s*$} $c -> name]} {StartOp $name}
-        if {[regexp {^\s*FIVAX TOOL \d+ LENGTH ([0-9.]+)} $c -> len]} {ToolComment $len}
     }
+    set S(tooling) [::fivax::dryrun toolStep $S(tooling) $blk]
+    foreach note [dict get $S(tooling) notes] {
+        lassign $note kind what
+        # (a tool comment the follower cannot read: the others are the dry run's)
+        if {$kind eq "unreadable"} {Warn $where "tool comment" $what}
+    }
+    SetLength
     if {![dict get $blk block]} return
     dict incr S(op) blocks
     foreach {kind word} [dict get $blk unknown] {
-        if {![dict exists $S(warnings) $kind]} {
-            puts stderr "verify: $where: $kind not understood ($word)"
-        }
-        dict incr S(warnings) $kind
+        Warn $where $kind "$kind not understood ($word)"
     }
     foreach axis [dict get $blk limit] {
         dict incr S(op) limits
@@ -202,7 +197,7 @@ proc ::verifytool::Line {line where n} {
         set S(prev) {}
         set figures [Cutting $blk $joints $P $t $where Bottom]
         lappend S(rows) [list $n [dict get $S(op) name] 1 $joints $P $t {*}$figures \
-            [dict get $blk F] [dict get $blk mode]]
+            [dict get $blk F] [dict get $blk mode] $S(length)]
         return
     }
     if {$motion in {1 2 3}} {
@@ -211,13 +206,13 @@ proc ::verifytool::Line {line where n} {
         set S(endU) [Place $P $t]
     }
     lappend S(rows) [list $n [dict get $S(op) name] $motion $joints $P $t {*}$figures \
-        [dict get $blk F] [dict get $blk mode]]
+        [dict get $blk F] [dict get $blk mode] $S(length)]
     set S(prev) [list $joints $P $t $S(endU)]
 }
 
 # ::verifytool::StartOp --
 #	Starts operation name: its statistics, the matching CL operation (by
-#	order) and its tool length.
+#	order) and its tool length (SetLength).
 proc ::verifytool::StartOp {name} {
     variable S
     if {[dict get $S(op) blocks] || $S(opIndex) >= 0} {lappend S(ops) $S(op)}
@@ -228,24 +223,37 @@ proc ::verifytool::StartOp {name} {
     set S(breakU) ""
     set S(cursor) 0
     set S(clPoints) {}
-    # (as in the post: the CL's TLDATA wins, -tool-length serves the tools without one)
     set S(clLength) ""
     if {$S(opIndex) < [llength $S(cl)]} {
         set clop [lindex $S(cl) $S(opIndex)]
         set S(clPoints) [dict get $clop points]
         set S(clLength) [dict get $clop length]
     }
-    set len [expr {$S(clLength) ne "" ? $S(clLength) : [dict get $S(opts) -tool-length]}]
+    SetLength
+}
+
+# ::verifytool::SetLength --
+#	Computes with the tool length of the CL operation (its TLDATA: it wins,
+#	as in the post), else the tool follower's (-tool-length, else the tool
+#	table's for the tool in the spindle, else the program's FIVAX TOOL
+#	comment), else the machine's tool_length.
+proc ::verifytool::SetLength {} {
+    variable S
+    set len $S(clLength)
+    if {$len eq ""} {set len [dict get $S(tooling) length]}
+    if {$len eq ""} {set len [dict get $S(machine) tool_length]}
+    if {$S(length) ne "" && $len == $S(length)} return
+    set S(length) $len
     $S(checker) setTool $len
 }
 
-# ::verifytool::ToolComment --
-#	The program's tool comment (FIVAX TOOL n LENGTH len): the tool length
-#	its X Y Z were computed with, unless the CL's TLDATA or -tool-length give one.
-proc ::verifytool::ToolComment {len} {
+# ::verifytool::Warn --
+#	Counts a word of kind not understood at where; says what on standard
+#	error the first time of its kind.
+proc ::verifytool::Warn {where kind what} {
     variable S
-    if {[dict get $S(opts) -tool-length] ne "" || $S(clLength) ne ""} return
-    $S(checker) setTool $len
+    if {![dict exists $S(warnings) $kind]} {puts stderr "verify: $where: $what"}
+    dict incr S(warnings) $kind
 }
 
 # ::verifytool::Travel --
@@ -625,15 +633,16 @@ proc ::verifytool::Csv {path rows names} {
 
 # ::verifytool::Clsf --
 #	Writes the back-plotted path as a CLSF to path: one operation per NC
-#	operation, RAPID before G0 points, FEDRAT when the tip feed changes.
-proc ::verifytool::Clsf {path rows tool} {
+#	operation (TLDATA: the tool length of its first block), RAPID before
+#	G0 points, FEDRAT when the tip feed changes.
+proc ::verifytool::Clsf {path rows} {
     set lines {}
     set op ""
     set last ""
     set lastFeed ""
     set prevP {}
     foreach row $rows {
-        lassign $row - name motion joints P t - - - - F mode
+        lassign $row - name motion joints P t - - - - F mode tool
         if {$name ne $op} {
             if {$op ne ""} {lappend lines END-OF-PATH}
             lappend lines "TOOL PATH/[regsub -all {[^A-Za-z0-9_.-]} $name _],TOOL,BACKPLOT" \
@@ -661,36 +670,40 @@ proc ::verifytool::Clsf {path rows tool} {
     ::fivax::nctool::writeLines $path $lines
 }
 
-# ::verifytool::Plots -- Writes the three plots of the rows with names prefix-*.svg; returns the paths.
+# ::verifytool::Plots --
+#	Writes the three plots of the rows with names prefix-*.svg; returns
+#	the paths. Their x axis is the NC file's line numbers, the worst lines
+#	marked; rotary values that wrap (360 to 0) break the line; rapids are
+#	dashed in the path.
 proc ::verifytool::Plots {prefix rows names tol file} {
     set n [llength $rows]
-    set idx {}
-    for {set i 0} {$i < $n} {incr i} {lappend idx $i}
+    set lines [lmap r $rows {lindex $r 0}]
+    set xlabel "NC line ([file tail $file])"
     set series {}
     foreach k {3 4} name $names {
-        lappend series [list "$name (deg)" $idx [lmap r $rows {
+        lappend series [list "$name (deg)" $lines [lmap r $rows {
             ::fivax::num::deg [lindex $r 3 $k]}]]
     }
     set axes [::fivax::svgplot chart -title "Rotary axes of [file tail $file]" \
-        -xlabel "block (written motion blocks in file order)" -ylabel "axis value (deg)" \
-        -series $series -zero 0]
+        -xlabel $xlabel -ylabel "axis value (deg)" -series $series -zero 0 -wrap 360]
     set dev {}
+    set all {{} {}}
     foreach {k label} {8 "tip inside blocks" 6 "tip at block ends vs CL"} {
         set xs {}
         set ys {}
-        set i 0
         foreach r $rows {
-            if {[lindex $r $k] ne ""} {lappend xs $i; lappend ys [lindex $r $k]}
-            incr i
+            if {[lindex $r $k] ne ""} {lappend xs [lindex $r 0]; lappend ys [lindex $r $k]}
         }
         if {[llength $xs]} {lappend dev [list "$label (mm)" $xs $ys]}
+        lset all 0 [concat [lindex $all 0] $xs]
+        lset all 1 [concat [lindex $all 1] $ys]
     }
     set deviation [::fivax::svgplot chart -title "Tool tip deviation, [file tail $file]" \
-        -xlabel "block (written motion blocks in file order)" -ylabel "deviation (mm)" \
-        -series $dev -limit [list $tol "tolerance $tol mm"]]
+        -xlabel $xlabel -ylabel "deviation (mm)" -series $dev -limit [list $tol "tolerance $tol mm"] \
+        -marks [::fivax::svgplot worst {*}$all 3 "line "]]
     set path [::fivax::svgplot projections -title "Back-plotted tool path, [file tail $file]" \
         -points [lmap r $rows {lindex $r 4}] -axes [lmap r $rows {lindex $r 5}] \
-        -every [expr {max(1, $n / 150)}] -whisker 10]
+        -rapids [lmap r $rows {expr {[lindex $r 2] == 0}}] -every [expr {max(1, $n / 150)}] -whisker 10]
     set out {}
     foreach {kind text} [list axes $axes deviation $deviation path $path] {
         lappend out [::fivax::svgplot write $prefix-$kind.svg $text]
@@ -708,8 +721,9 @@ proc ::verifytool::main {argv} {
             ::fivax::nctool die "verify: bad -controller \"[dict get $opts -controller]\": must be one of\
                 [join [::fivax::verify dialects] {, }]"
         }
-        lassign [Run $opts $path $machine] ops rows problems warnings names lines
-        set events [DryRun $opts $path $machine $lines]
+        set tools [::fivax::nctool toolTable [dict get $opts -tools]]
+        lassign [Run $opts $path $machine $tools] ops rows problems warnings names lines
+        set events [DryRun $opts $path $machine $lines $tools]
     } trap {FIVAX} {msg} {
         ::fivax::nctool die "verify: $msg"
     } trap {POSIX} {msg} {
@@ -728,15 +742,13 @@ proc ::verifytool::main {argv} {
     if {[llength $events]} {
         lappend problems "[llength $events] dry-run events (machine state, stock, bodies: listed above)"
     }
-    set tool [expr {[dict get $opts -tool-length] ne "" ? [dict get $opts -tool-length] :
-        [dict get $machine tool_length]}]
     try {
         if {[dict get $opts -csv] ne ""} {
             Csv [dict get $opts -csv] $rows $names
             Say $opts "verify: wrote [dict get $opts -csv]"
         }
         if {[dict get $opts -o] ne ""} {
-            Clsf [dict get $opts -o] $rows $tool
+            Clsf [dict get $opts -o] $rows
             Say $opts "verify: wrote [dict get $opts -o]"
         }
         if {[dict get $opts -svg] ne ""} {

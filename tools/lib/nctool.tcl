@@ -3,11 +3,11 @@
 #	fivax::opts, -help from the same table, errors on standard error with
 #	exit 1), opening an NC or data file for reading with a clear error,
 #	writing lines through a temporary file beside the target (renamed at
-#	the end: a failed run leaves no partial file), and CSV quoting. Needs
-#	the fivax package (opts, Fail).
+#	the end: a failed run leaves no partial file), CSV quoting and reading
+#	a tool table file. Needs the fivax package (opts, Fail, dryrun).
 
 namespace eval ::fivax::nctool {
-    namespace export args die open writeLines csvField
+    namespace export args die open writeLines csvField toolTable
     namespace ensemble create -prefixes 0
 }
 
@@ -80,4 +80,18 @@ proc ::fivax::nctool::writeLines {path lines} {
 proc ::fivax::nctool::csvField {text} {
     if {[regexp {[",\n\r]} $text]} {return "\"[string map {\" \"\"} $text]\""}
     return $text
+}
+
+# ::fivax::nctool::toolTable --
+#	Returns the tool table of the file at path (fivax::dryrun tools: tool
+#	number -> {length L radius R}), {} for path "". Errors: {FIVAX TOOL
+#	OPEN}, {FIVAX DRYRUN TOOLS} (FILE:LINE).
+proc ::fivax::nctool::toolTable {path} {
+    if {$path eq ""} {return {}}
+    set chan [open $path]
+    try {
+        ::fivax::dryrun::tools [read $chan] $path
+    } finally {
+        close $chan
+    }
 }

@@ -44,10 +44,11 @@ proc ::fivax::kinerr::signs {values} {
 
 # ::fivax::kinerr::path --
 #	Returns one {dx dy dz dpos dangle} per joint vector of jointsList on
-#	model, for the rotary errors errors = {e1 e2} (radians) applied as
+#	its kin model (models: one per joint vector, e.g. each block's tool
+#	length), for the rotary errors errors = {e1 e2} (radians) applied as
 #	they are (mode constant) or signed by each axis's direction of motion
 #	(mode direction).
-proc ::fivax::kinerr::path {model jointsList errors mode} {
+proc ::fivax::kinerr::path {models jointsList errors mode} {
     lassign $errors e1 e2
     if {$mode eq "direction"} {
         set s1 [signs [lmap j $jointsList {lindex $j 3}]]
@@ -56,7 +57,7 @@ proc ::fivax::kinerr::path {model jointsList errors mode} {
         set s1 [lrepeat [llength $jointsList] 1]
         set s2 $s1
     }
-    lmap j $jointsList a $s1 b $s2 {
+    lmap model $models j $jointsList a $s1 b $s2 {
         at $model $j [list [expr {$a * $e1}] [expr {$b * $e2}]]
     }
 }
