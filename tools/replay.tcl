@@ -528,8 +528,12 @@ proc ::replay::main {argv} {
     variable bufferSize
     Reset
     lassign [ParseArgs $argv] opts clsf
-    set settings [::fivax::settings complete \
-        [dict filter $opts key {*}[::fivax::opts names [::fivax::settings table]]]]
+    try {
+        set settings [::fivax::settings complete \
+            [dict filter $opts key {*}[::fivax::opts names [::fivax::settings table]]]]
+    } trap {FIVAX MACHINE NOFILE} {msg} {
+        Die $msg
+    }
     set machineFile [dict get $settings -machine]
     CheckInput $clsf
     set target ""
