@@ -78,7 +78,7 @@ proc ::kinerrtool::Blocks {checker path} {
             set blk [$checker read $line]
             foreach {kind word} [dict get $blk unknown] {
                 if {$kind ni $warned} {
-                    puts stderr "kinerr: $path:$n: warning: $kind not understood ($word); read as if absent"
+                    puts stderr "kinerr: warning: $path:$n: $kind not understood ($word); read as if absent"
                     lappend warned $kind
                 }
             }
