@@ -499,8 +499,11 @@ proc ::replay::Post {settings clsf chan out process} {
     }
 }
 
-# ::replay::Summary -- Prints the run's figures on standard error.
-proc ::replay::Summary {stats} {
+# ::replay::Summary --
+#	Prints the run's figures (stats) on standard error; the tool changes,
+#	dwell swings and clamped inverse-time feeds only when there are any,
+#	each explained (machine: the machine dict).
+proc ::replay::Summary {stats machine} {
     dict with stats {}
     # the runtime's warnings (unknown records) and the post's
     if {[info exists postWarnings]} {incr warnings $postWarnings}
@@ -515,9 +518,27 @@ proc ::replay::Summary {stats} {
     if {[info exists inserted]} {
         Say [format "fivax: %d points inserted, %d limit retracts, %d rapids after cutting, rotary travel %.3f deg; %d azimuth holds, %d singular swings, %d moves left out of tolerance" \
             $inserted $retracts $rapidsAfterCut $travel $holds $swings $unresolved]
-        Say [format "fivax: %d tool changes; %d dwell swings (rotaries turning %.3f deg with the tip in place); %d inverse-time feeds clamped at the machine's maximum (worst %.2f times slower than programmed)" \
-            $toolChanges $dwells $dwellTurn $clamps $slowdown]
+        if {$toolChanges} {Say "fivax: [Count $toolChanges {tool change}]"}
+        if {$dwells} {
+            Say [format "fivax: %s: cutting blocks where the rotaries turn, %.3f deg in all,\
+                with the tip in place (the CL turns the tool axis at one point, or the path\
+                leaves the singular tool axis with another azimuth)" \
+                [Count $dwells {dwell swing}] $dwellTurn]
+        }
+        if {$clamps} {
+            set max [format %g [dict get $machine inverse_time_max]]
+            Say [format "fivax: %s written at the machine's largest inverse-time feed,\
+                inverse_time_max %s: these blocks are short for their feed (G93 F = feed /\
+                length, 1/min), so they run slower than programmed, the worst %.2f times; the\
+                path is unchanged (raise inverse_time_max if the control takes a larger F)" \
+                [Count $clamps {cutting block}] $max $slowdown]
+        }
     }
+}
+
+# ::replay::Count -- Returns "n noun", the noun with an s unless n is 1.
+proc ::replay::Count {n noun} {
+    expr {$n == 1 ? "$n $noun" : "$n ${noun}s"}
 }
 
 # ::replay::main --
@@ -542,7 +563,7 @@ proc ::replay::main {argv} {
         # from here on a failed run removes the program of an earlier one
         if {[lindex $target 0] eq "file"} {set R(stale) [list [lindex $target 1]]}
     }
-    CheckMachine $settings
+    set machine [CheckMachine $settings]
     if {[dict get $settings -log] ne ""} {
         CheckTarget -log [dict get $settings -log] $clsf $machineFile
     }
@@ -581,7 +602,7 @@ proc ::replay::main {argv} {
     }
     ::fivax::clsf::progress ""
     ClearProgress
-    if {![dict get $opts -quiet]} {Summary $stats}
+    if {![dict get $opts -quiet]} {Summary $stats $machine}
 }
 
 if {[info exists ::argv0] && [file normalize $::argv0] eq [file normalize [info script]]} {
