@@ -487,6 +487,7 @@ proc ::replay::Post {settings clsf chan out process} {
         if {[lindex $code 0] ne "FIVAX" && [lindex $code 0] ne "REPLAY"} {
             set msg "internal error: $msg"
         }
+        append msg [MsysHint $code $settings [$rt interp]]
         if {![regexp {^[^\n]*:\d+: } $msg]} {
             set child [$rt interp]
             if {[$child eval {info exists ::mom_cl_line}]} {
@@ -497,6 +498,27 @@ proc ::replay::Post {settings clsf chan out process} {
     } finally {
         $rt destroy
     }
+}
+
+# ::replay::MsysHint --
+#	Returns the hint added to the message of an error (code: its error
+#	code) when the post in interpreter child stopped on an unreachable
+#	tool axis (its fivax(abortCode)), the CL file's MSYS record turns the
+#	MCS and -msys is off in settings; else "".
+proc ::replay::MsysHint {code settings child} {
+    if {$code eq {FIVAX MOM ABORT} && [$child eval {info exists ::fivax(abortCode)}]} {
+        set code [$child eval {set ::fivax(abortCode)}]
+    }
+    if {$code ne {FIVAX MOTION UNREACHABLE} || [dict get $settings -msys]
+            || ![$child eval {array exists ::mom_msys_matrix}]} {return ""}
+    set axes [$child eval {lmap i {0 1 2 3 4 5} {set ::mom_msys_matrix($i)}}]
+    foreach a $axes b {1 0 0 0 1 0} {
+        if {abs($a - $b) > 1e-9} {
+            return "; the CL file's MSYS record turns its MCS in NX's absolute frame:\
+                try -msys, which posts the CL data in that frame"
+        }
+    }
+    return ""
 }
 
 # ::replay::Summary --
