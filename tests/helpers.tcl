@@ -1,8 +1,9 @@
 # helpers.tcl --
 #	Shared test setup: loads fivax from this checkout (never an installed
 #	copy) and the test and tool helpers (tests/kinref.tcl,
-#	tools/lib/toolpath.tcl), registers the float matchers, and the
-#	real-CL-corpus constraint.
+#	tools/lib/toolpath.tcl), tcllib's math::linearalgebra (the reference
+#	rotations' products, independent of lib/), registers the float
+#	matchers, and the real-CL-corpus constraint.
 #
 #	Conventions for test files: procs a file defines carry its module's
 #	name as a prefix (motionPlan, clsfStats) so that no two files define
@@ -12,6 +13,7 @@
 #	-errorCode; results carry measured values (see customMatch le).
 
 package require tcltest 2.5
+package require math::linearalgebra
 namespace import ::tcltest::*
 
 set ::fivaxRoot [file dirname [file dirname [file normalize [info script]]]]
@@ -352,16 +354,11 @@ proc testRotation {axis deg} {
     }
 }
 
-# testProduct -- Returns the product of the 3x3 matrices given, left to right.
+# testProduct -- Returns the product of the 3x3 matrices given, left to right (tcllib).
 proc testProduct {args} {
-    set R {{1.0 0.0 0.0} {0.0 1.0 0.0} {0.0 0.0 1.0}}
+    set R [::math::linearalgebra::mkIdentity 3]
     foreach B $args {
-        set R [lmap row $R {
-            lmap j {0 1 2} {
-                expr {[lindex $row 0] * [lindex $B 0 $j] + [lindex $row 1] * [lindex $B 1 $j]
-                    + [lindex $row 2] * [lindex $B 2 $j]}
-            }
-        }]
+        set R [::math::linearalgebra::matmul $R $B]
     }
     return $R
 }
