@@ -75,9 +75,12 @@ proc corpusFile {name} {
 #	Returns the path of the temporary file rpm-<name>.tcl: the shipped
 #	machine file machines/name.tcl with default_rpm 10000, for the real CL
 #	files that have no SPINDL record (most NX ones: no cut without a
-#	speed). The test that calls it removes it (removeFile rpm-<name>.tcl).
-proc machineRpm {name} {
-    makeFile "[viewFile [file join $::fivaxRoot machines $name.tcl]]\ndefault_rpm 10000\n" rpm-$name.tcl
+#	speed), and with travel (a travel value) in place of its own when
+#	given. The test that calls it removes it (removeFile rpm-<name>.tcl).
+proc machineRpm {name {travel ""}} {
+    set text [viewFile [file join $::fivaxRoot machines $name.tcl]]
+    if {$travel ne ""} {regsub -line {^travel\s.*$} $text [list travel $travel] text}
+    makeFile "$text\ndefault_rpm 10000\n" rpm-$name.tcl
 }
 
 # runReplay --
