@@ -8,9 +8,13 @@
 #	a value within its axis's bounds (key 'bounds': the 'limits' widened
 #	by limitSlack, once per machine) is inside.
 #
+#	A machine is named by its file, or by the name of a shipped machine
+#	(machines/NAME.tcl beside lib/: find, shipped).
+#
 #	Errors: {FIVAX MACHINE <DETAIL>} with a message "<file>: <what>", where
 #	DETAIL is one of
-#	    NOFILE     the file cannot be read
+#	    NOFILE     the file cannot be read, or no file and no shipped
+#	               machine has the name given
 #	    NOTLIST    the text (comments removed) is not a valid Tcl list
 #	    ODD        a key/value list of odd length (top level or axis)
 #	    DUPLICATE  a key or an axis name given twice
@@ -22,8 +26,11 @@
 #	    LIMIT      (checkLimits) an axis value outside the travel or limits
 
 namespace eval ::fivax::machine {
-    namespace export load parse rotaryNames outside checkLimits
+    namespace export load find shipped parse rotaryNames outside checkLimits
     namespace ensemble create -prefixes 0
+
+    # The shipped machine files (machines/ beside lib/).
+    variable shippedDir [file join [file dirname $::fivax::home] machines]
 
     # Top-level keys and their defaults ("" default with required = 1).
     variable topDefaults {
@@ -55,9 +62,11 @@ namespace eval ::fivax::machine {
 }
 
 # ::fivax::machine::load --
-#	Returns the machine dict read from the machine file at path.
-#	Errors: {FIVAX MACHINE NOFILE} and those of parse.
+#	Returns the machine dict read from the machine file at path, or of the
+#	shipped machine path names (find).
+#	Errors: {FIVAX MACHINE NOFILE} and those of find and parse.
 proc ::fivax::machine::load {path} {
+    set path [find $path]
     if {![file isfile $path] || ![file readable $path]} {
         ::fivax::Fail MACHINE NOFILE "$path: cannot read machine file"
     }
@@ -71,6 +80,29 @@ proc ::fivax::machine::load {path} {
         if {[info exists chan]} {close $chan}
     }
     parse $text $path
+}
+
+# ::fivax::machine::find --
+#	Returns the machine file name gives: name itself when it exists or is
+#	no bare name (it has a directory, an extension or other characters
+#	than letters, digits, _ and -), else the shipped machine of that name
+#	(dmu125p: machines/dmu125p.tcl). Errors: {FIVAX MACHINE NOFILE} for a
+#	bare name that is neither, listing the shipped machines.
+proc ::fivax::machine::find {name} {
+    variable shippedDir
+    if {[file exists $name] || ![regexp {^[A-Za-z0-9_-]+$} $name]} {return $name}
+    set path [file join $shippedDir $name.tcl]
+    if {[file isfile $path]} {return $path}
+    ::fivax::Fail MACHINE NOFILE "$name: machine file not found, and no shipped machine\
+        has that name (shipped machines: [join [shipped] {, }])"
+}
+
+# ::fivax::machine::shipped -- Returns the names of the shipped machines (machines/*.tcl), sorted.
+proc ::fivax::machine::shipped {} {
+    variable shippedDir
+    lsort [lmap path [glob -nocomplain -types f -directory $shippedDir *.tcl] {
+        file rootname [file tail $path]
+    }]
 }
 
 # ::fivax::machine::parse --

@@ -500,6 +500,11 @@ oo::class create ::fivax::mom::Runtime {
         if {[llength $S(listing)]} {{*}$S(listing) $text}
     }
 
+    # Warn -- Lists a warning of the runtime, prefixed as the post's are ("fivax: warning: ").
+    method Warn {text} {
+        my Listing "fivax: warning: $text"
+    }
+
     # Record -- Maps one CLSF record to globals and events.
     method Record {rec} {
         set kind [dict get $rec kind]
@@ -838,7 +843,7 @@ oo::class create ::fivax::mom::Runtime {
         namespace upvar ::fivax::num pi pi
         if {$S(point) eq ""} {
             incr S(warnings)
-            my Listing "warning: [::fivax::mom::Where $circle]: CIRCLE with no position before it:\
+            my Warn "[::fivax::mom::Where $circle]: CIRCLE with no position before it:\
                 the arc has no start, its end is reached by a linear move"
             my FeedGlobals $rec
             my SetPosition $end $S(axis)
@@ -1174,7 +1179,7 @@ oo::class create ::fivax::mom::Runtime {
         incr S(warnings)
         dict incr S(unknown) $major
         if {[dict get $S(unknown) $major] <= 5} {
-            my Listing "warning: [::fivax::mom::Where $rec]: unknown record '$major' ignored"
+            my Warn "[::fivax::mom::Where $rec]: unknown record '$major' ignored"
         }
     }
 
@@ -1182,7 +1187,7 @@ oo::class create ::fivax::mom::Runtime {
     method UnknownTotals {} {
         dict for {major count} $S(unknown) {
             if {$count > 5} {
-                my Listing "warning: [expr {$count - 5}] more '$major' records ignored ($count in all)"
+                my Warn "[expr {$count - 5}] more '$major' records ignored ($count in all)"
             }
         }
     }

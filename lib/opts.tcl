@@ -58,7 +58,8 @@ proc ::fivax::opts::parse {table argList {who ""}} {
 #	Returns {dict rest}: the options of a command line (bool options are
 #	switches without value, the others take the next word), checked, with
 #	defaults for those not given, and the words after the options (after
-#	"--" or the first word that does not start with "-").
+#	"--" or the first word that does not start with "-"). Where table has
+#	-help, -h and --help are -help.
 proc ::fivax::opts::argv {table words {who ""}} {
     lassign [given $table $words $who] out rest
     list [dict merge [Defaults $table] $out] $rest
@@ -69,12 +70,14 @@ proc ::fivax::opts::argv {table words {who ""}} {
 #	the words give (for settings added on top of others).
 proc ::fivax::opts::given {table words {who ""}} {
     set out [dict create]
+    set help [expr {[lsearch -exact -index 0 $table -help] >= 0 ? {-h -help --help -help} : {}}]
     set i 0
     set n [llength $words]
     while {$i < $n} {
         set w [lindex $words $i]
         if {$w eq "--"} {incr i; break}
         if {[string index $w 0] ne "-" || $w eq "-"} break
+        if {[dict exists $help $w]} {set w [dict get $help $w]}
         set entry [Entry $table $w $who]
         if {[lindex $entry 1] eq "bool"} {
             dict set out $w 1
@@ -100,12 +103,12 @@ proc ::fivax::opts::check {table name value {who ""}} {
 
 # ::fivax::opts::help --
 #	Returns the help text of table: one line per option, "-name ARG  doc
-#	(default ...)".
+#	(default ...)"; -help with its other spellings (argv).
 proc ::fivax::opts::help {table} {
     set lines {}
     foreach entry $table {
         lassign $entry name type default arg doc
-        set left [string trim "$name $arg"]
+        set left [expr {$name eq "-help" ? "-help, -h, --help" : [string trim "$name $arg"]}]
         if {$type ne "bool" && $default ne ""} {append doc " (default $default)"}
         if {[lindex $type 0] eq "many"} {append doc " (repeatable)"}
         lappend lines [format "  %-22s %s" $left $doc]

@@ -8,9 +8,9 @@ namespace eval ::fivax::settings {
     namespace export table parse complete pick check output
     namespace ensemble create -prefixes 0
     # The machine of a job that names none.
-    variable defaultMachine [file join [file dirname $::fivax::home] machines hh-tilt45.tcl]
+    variable defaultMachine [file join $::fivax::machine::shippedDir hh-tilt45.tcl]
     variable Job {
-        {-machine text {} FILE "machine file (default: the post's machine, machines/hh-tilt45.tcl)"}
+        {-machine text {} FILE "machine file, or a shipped machine's name: dmu125p is machines/dmu125p.tcl (default: the post's machine, hh-tilt45)"}
         {-arc-tol {real gt 0} 0.002 MM "chord tolerance of arcs written as points"}
         {-tool-length {maybe real gt 0} {} MM
             "tool length (gauge length) of the tools the CL gives none (no TLDATA); a CL length wins. Required in joint mode on a head machine"}
@@ -50,13 +50,14 @@ proc ::fivax::settings::parse {given} {
 
 # ::fivax::settings::complete --
 #	Returns settings (a parsed settings dict) with what the installation
-#	gives filled in: -machine, when empty, is the default machine
-#	(machines/hh-tilt45.tcl beside lib/).
+#	gives filled in: -machine is the machine file (fivax::machine find: a
+#	shipped machine's name becomes its file), when empty the default
+#	machine (machines/hh-tilt45.tcl beside lib/). Errors: those of find.
 proc ::fivax::settings::complete {settings} {
     variable defaultMachine
-    if {[dict get $settings -machine] eq ""} {
-        dict set settings -machine $defaultMachine
-    }
+    set machine [dict get $settings -machine]
+    dict set settings -machine [expr {$machine eq "" ? $defaultMachine
+        : [::fivax::machine::find $machine]}]
     return $settings
 }
 

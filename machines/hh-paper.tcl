@@ -1,6 +1,9 @@
 # hh-paper -- head-head fork head (alpha 0), the head-head paper's worked
 # example: L = 433.75 = pivot with a zero tool length, y_H = -5.5 mm
 # (kinematics.md sections 3 and 9). Lengths in mm, angles in degrees.
+# Example machine, no real machine's data (the head-head paper's geometry);
+# its travel is an example value: describe your machine before posting for
+# it.
 name        hh-paper
 description {Head-head fork head, paper geometry (alpha 0, y_H -5.5)}
 units       mm

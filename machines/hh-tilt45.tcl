@@ -1,5 +1,8 @@
 # hh-tilt45 -- head-head, B tilted 45 deg (nutating head); paper geometry.
 # Reachable tool axes: K >= -cos(2 alpha) = 0.
+# Example machine, no real machine's data (the head-head paper's geometry
+# with alpha 45); its travel is an example value: describe your machine
+# before posting for it.
 name        hh-tilt45
 description {Head-head, B tilted 45 deg}
 units       mm

@@ -1,5 +1,8 @@
 # ht-b45 -- head-table: B on the head at 45 deg in the YZ plane through the
 # pivot point, continuous C on the table about +Z through the origin.
+# Example machine, no real machine's data (a DMU 125 P-like head, round
+# numbers); its travel is an example value: describe your machine before
+# posting for it.
 name        ht-b45
 description {Head B at 45 deg, continuous table C}
 units       mm

@@ -1,6 +1,9 @@
 # ht-paper -- head-table: B on the head about +Y through the pivot point,
 # C on the table about +Z through the origin (the head-table paper's
 # machine, kinematics.md section 4: pivot 125 + TLDATA tool length 275).
+# Example machine, no real machine's data (the head-table paper's geometry);
+# its travel is an example value: describe your machine before posting for
+# it.
 name        ht-paper
 description {Head B, table C (paper geometry, pivot 125)}
 units       mm

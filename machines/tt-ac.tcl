@@ -1,6 +1,8 @@
 # tt-ac -- A-C trunnion table: A (outer) about +X through (0, 0, -59.793),
 # C (carried by A) about +Z through the origin. XYZ do not depend on the
 # tool length on a table-table machine.
+# Example machine, no real machine's data (round numbers); its travel is an
+# example value: describe your machine before posting for it.
 name        tt-ac
 description {A-C trunnion table}
 units       mm

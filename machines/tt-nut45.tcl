@@ -1,6 +1,8 @@
 # tt-nut45 -- nutating table: B (outer) at 45 deg in the YZ plane through
 # (0, 0, -120), C (carried by B) about +Z through the origin.
 # Reachable tool axes: K >= 0 (cos B = 2K - 1).
+# Example machine, no real machine's data (round numbers); its travel is an
+# example value: describe your machine before posting for it.
 name        tt-nut45
 description {Nutating 45 deg table, B-C}
 units       mm

@@ -9,6 +9,9 @@
 #   B = asin(K) or 180 - asin(K),  C = atan2(J, -I) (+180 for the second),
 #   Y = -(x sin C + y cos C)       (the paper's dy is -Y: the table moves).
 # Lengths in mm, angles in degrees.
+# Example machine, no real machine's data (the rotary-axis error study's
+# geometry); its travel is an example value: describe your machine before
+# posting for it.
 name        ttr-tr
 description {TTR-TR: table X Y C, head Z B (tool horizontal at B 0, vertical at B 90)}
 units       mm

@@ -38,10 +38,13 @@ unset fivax_msg
 #	one way every failure leaves the post: MOM_abort with the message,
 #	the CL position and the operation, the message also in the log (never
 #	a Tcl trace). An error that is no fivax error is marked "internal
-#	error" (a bug to report), as the command line marks it.
+#	error" (a bug to report), as the command line marks it. Its error
+#	code stays in fivax(abortCode) for the host (MOM_abort takes only the
+#	message).
 proc fivax_abort {msg opts} {
     global fivax mom_path_name
     set code [dict get $opts -errorcode]
+    set fivax(abortCode) $code
     if {[lindex $code 0] ne "FIVAX"} {set msg "internal error: $msg"}
     # messages from the planner and the reader start with the position
     set where [fivax_where]

@@ -1,8 +1,9 @@
 # helpers.tcl --
 #	Shared test setup: loads fivax from this checkout (never an installed
 #	copy) and the test and tool helpers (tests/kinref.tcl,
-#	tools/lib/toolpath.tcl), registers the float matchers, and the
-#	real-CL-corpus constraint.
+#	tools/lib/toolpath.tcl), tcllib's math::linearalgebra (the reference
+#	rotations' products, independent of lib/), registers the float
+#	matchers, and the real-CL-corpus constraint.
 #
 #	Conventions for test files: procs a file defines carry its module's
 #	name as a prefix (motionPlan, clsfStats) so that no two files define
@@ -12,6 +13,7 @@
 #	-errorCode; results carry measured values (see customMatch le).
 
 package require tcltest 2.5
+package require math::linearalgebra
 namespace import ::tcltest::*
 
 set ::fivaxRoot [file dirname [file dirname [file normalize [info script]]]]
@@ -73,9 +75,12 @@ proc corpusFile {name} {
 #	Returns the path of the temporary file rpm-<name>.tcl: the shipped
 #	machine file machines/name.tcl with default_rpm 10000, for the real CL
 #	files that have no SPINDL record (most NX ones: no cut without a
-#	speed). The test that calls it removes it (removeFile rpm-<name>.tcl).
-proc machineRpm {name} {
-    makeFile "[viewFile [file join $::fivaxRoot machines $name.tcl]]\ndefault_rpm 10000\n" rpm-$name.tcl
+#	speed), and with travel (a travel value) in place of its own when
+#	given. The test that calls it removes it (removeFile rpm-<name>.tcl).
+proc machineRpm {name {travel ""}} {
+    set text [viewFile [file join $::fivaxRoot machines $name.tcl]]
+    if {$travel ne ""} {regsub -line {^travel\s.*$} $text [list travel $travel] text}
+    makeFile "$text\ndefault_rpm 10000\n" rpm-$name.tcl
 }
 
 # runReplay --
@@ -352,16 +357,11 @@ proc testRotation {axis deg} {
     }
 }
 
-# testProduct -- Returns the product of the 3x3 matrices given, left to right.
+# testProduct -- Returns the product of the 3x3 matrices given, left to right (tcllib).
 proc testProduct {args} {
-    set R {{1.0 0.0 0.0} {0.0 1.0 0.0} {0.0 0.0 1.0}}
+    set R [::math::linearalgebra::mkIdentity 3]
     foreach B $args {
-        set R [lmap row $R {
-            lmap j {0 1 2} {
-                expr {[lindex $row 0] * [lindex $B 0 $j] + [lindex $row 1] * [lindex $B 1 $j]
-                    + [lindex $row 2] * [lindex $B 2 $j]}
-            }
-        }]
+        set R [::math::linearalgebra::matmul $R $B]
     }
     return $R
 }

@@ -39,7 +39,7 @@ package require fivax 0.1
 namespace eval ::bench {
     variable options {
         {-sizes any {50000 200000 1000000} "N ..." "CL points of the generated files (multiples of 1000)"}
-        {-machine text "" FILE "machine file (default machines/hh-tilt45.tcl)"}
+        {-machine text "" FILE "machine file, or a shipped machine's name (default hh-tilt45)"}
         {-help bool 0 "" "print this help"}
     }
     # Points a pass, and the passes generated at most.
@@ -375,10 +375,15 @@ proc ::bench::main {argv} {
             exit 1
         }
     }
-    set machineFile [dict get $opts -machine]
-    if {$machineFile eq ""} {set machineFile [file join $root machines hh-tilt45.tcl]}
-    set machineFile [file normalize $machineFile]
-    set name [dict get [::fivax::machine load $machineFile] name]
+    try {
+        set machineFile [::fivax::machine find [dict get $opts -machine]]
+        if {$machineFile eq ""} {set machineFile [file join $root machines hh-tilt45.tcl]}
+        set machineFile [file normalize $machineFile]
+        set name [dict get [::fivax::machine load $machineFile] name]
+    } trap {FIVAX MACHINE} {msg} {
+        puts stderr "bench: $msg"
+        exit 1
+    }
     set dir [file join [expr {[info exists ::env(TMPDIR)] ? $::env(TMPDIR) : "/tmp"}] \
         fivax-bench-[pid]]
     file mkdir $dir

@@ -21,7 +21,7 @@ foreach f {nctool.tcl svgplot.tcl rotaryerr.tcl} {
 
 namespace eval ::kinerrtool {
     variable Options {
-        {-machine text {} FILE "machine file (required)"}
+        {-machine text {} FILE "machine file, or a shipped machine's name: dmu125p is machines/dmu125p.tcl (required)"}
         {-d {many text} {} AXIS=DEG "angular error of a rotary axis, e.g. -d B=0.01"}
         {-mode {enum constant direction} constant MODE "errors constant, or signed by each axis's direction of motion"}
         {-controller {maybe word} {} NAME "dialect of the NC text (default: the machine's controller)"}
@@ -98,7 +98,7 @@ proc ::kinerrtool::Blocks {checker path tooling} {
             }
             foreach {kind word} [dict get $blk unknown] {
                 if {$kind ni $warned} {
-                    puts stderr "kinerr: $path:$n: warning: $kind not understood ($word); read as if absent"
+                    puts stderr "kinerr: warning: $path:$n: $kind not understood ($word); read as if absent"
                     lappend warned $kind
                 }
             }

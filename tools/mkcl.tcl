@@ -3,16 +3,21 @@
 #	tools/lib/toolpath.tcl, and prints one summary line per file (points, largest
 #	tool-axis angle off +Z).
 #
-#	tclsh tools/mkcl.tcl ?outdir?     (default: tests/data of this checkout)
+#	tclsh tools/mkcl.tcl ?outdir?     (default: tests/data of this checkout; -help)
 
 package require Tcl 8.6
 
 set root [file dirname [file dirname [file normalize [info script]]]]
 set auto_path [linsert $auto_path 0 [file join $root lib]]
 package require fivax 0.1
-source [file join $root tools lib toolpath.tcl]
+foreach f {nctool.tcl toolpath.tcl} {
+    source [file join $root tools lib $f]
+}
 
 namespace eval ::mkcl {
+    variable Options {
+        {-help bool 0 "" "print this help"}
+    }
     # Sample files: name, path generator command, clsf options.
     variable samples {
         demo-5ax.cls {
@@ -56,12 +61,12 @@ proc ::mkcl::MaxTilt {pts} {
 
 # main -- Writes every sample into argv's directory (default tests/data).
 proc main {argv} {
+    set usage "tclsh tools/mkcl.tcl ?outdir?"
+    lassign [::fivax::nctool args $::mkcl::Options $argv mkcl $usage \
+        "Regenerates the synthetic CL samples (default: in tests/data)."] - rest
+    if {[llength $rest] > 1} {::fivax::nctool die "usage: $usage (-help for the options)"}
     set dir [file join $::root tests data]
-    if {[llength $argv] > 1} {
-        puts stderr "usage: tclsh tools/mkcl.tcl ?outdir?"
-        exit 1
-    }
-    if {[llength $argv] == 1} {set dir [lindex $argv 0]}
+    if {[llength $rest] == 1} {set dir [lindex $rest 0]}
     file mkdir $dir
     foreach {name gen opts} $::mkcl::samples {
         set pts [::fivax::toolpath {*}$gen]

@@ -196,7 +196,11 @@ proc ::replay::CheckInput {clsf} {
 #	name (if any) can be read.
 proc ::replay::CheckMachineFile {given} {
     if {![dict exists $given -machine]} return
-    set file [dict get $given -machine]
+    try {
+        set file [::fivax::machine find [dict get $given -machine]]
+    } trap {FIVAX MACHINE NOFILE} {msg} {
+        Die $msg
+    }
     if {![file isfile $file] || ![file readable $file]} {Die "$file: machine file not found"}
 }
 
@@ -655,6 +659,7 @@ proc ::replay::Post {postFile defFile given clsf chan out process progress} {
         if {[lindex $code 0] ne "FIVAX" && [lindex $code 0] ne "REPLAY"} {
             set msg "internal error: $msg"
         }
+        append msg [MsysHint $code $settings [$rt interp]]
         if {![regexp {^[^\n]*:\d+: } $msg]} {
             set child [$rt interp]
             if {[$child eval {info exists ::mom_cl_line}]} {
@@ -667,8 +672,32 @@ proc ::replay::Post {postFile defFile given clsf chan out process progress} {
     }
 }
 
-# ::replay::Summary -- Prints the run's figures on standard error.
-proc ::replay::Summary {stats} {
+# ::replay::MsysHint --
+#	Returns the hint added to the message of an error (code: its error
+#	code) when the post in interpreter child stopped on an unreachable
+#	tool axis (its fivax(abortCode)), the CL file's MSYS record turns the
+#	MCS and -msys is off in settings; else "".
+proc ::replay::MsysHint {code settings child} {
+    if {$code eq {FIVAX MOM ABORT} && [$child eval {info exists ::fivax(abortCode)}]} {
+        set code [$child eval {set ::fivax(abortCode)}]
+    }
+    if {$code ne {FIVAX MOTION UNREACHABLE} || [dict get $settings -msys]
+            || ![$child eval {array exists ::mom_msys_matrix}]} {return ""}
+    set axes [$child eval {lmap i {0 1 2 3 4 5} {set ::mom_msys_matrix($i)}}]
+    foreach a $axes b {1 0 0 0 1 0} {
+        if {abs($a - $b) > 1e-9} {
+            return "; the CL file's MSYS record turns its MCS in NX's absolute frame:\
+                try -msys, which posts the CL data in that frame"
+        }
+    }
+    return ""
+}
+
+# ::replay::Summary --
+#	Prints the run's figures (stats) on standard error; the tool changes,
+#	dwell swings and clamped inverse-time feeds only when there are any,
+#	each explained (machine: the machine dict).
+proc ::replay::Summary {stats machine} {
     dict with stats {}
     # the runtime's warnings (unknown records) and the post's
     if {[info exists postWarnings]} {incr warnings $postWarnings}
@@ -683,9 +712,27 @@ proc ::replay::Summary {stats} {
     if {[info exists inserted]} {
         Say [format "fivax: %d points inserted, %d limit retracts, %d rapids after cutting, rotary travel %.3f deg; %d azimuth holds, %d singular swings, %d moves left out of tolerance" \
             $inserted $retracts $rapidsAfterCut $travel $holds $swings $unresolved]
-        Say [format "fivax: %d tool changes; %d dwell swings (rotaries turning %.3f deg with the tip in place); %d inverse-time feeds clamped at the machine's maximum (worst %.2f times slower than programmed)" \
-            $toolChanges $dwells $dwellTurn $clamps $slowdown]
+        if {$toolChanges} {Say "fivax: [Count $toolChanges {tool change}]"}
+        if {$dwells} {
+            Say [format "fivax: %s: cutting blocks where the rotaries turn, %.3f deg in all,\
+                with the tip in place (the CL turns the tool axis at one point, or the path\
+                leaves the singular tool axis with another azimuth)" \
+                [Count $dwells {dwell swing}] $dwellTurn]
+        }
+        if {$clamps} {
+            set max [format %g [dict get $machine inverse_time_max]]
+            Say [format "fivax: %s written at the machine's largest inverse-time feed,\
+                inverse_time_max %s: these blocks are short for their feed (G93 F = feed /\
+                length, 1/min), so they run slower than programmed, the worst %.2f times; the\
+                path is unchanged (raise inverse_time_max if the control takes a larger F)" \
+                [Count $clamps {cutting block}] $max $slowdown]
+        }
     }
+}
+
+# ::replay::Count -- Returns "n noun", the noun with an s unless n is 1.
+proc ::replay::Count {n noun} {
+    expr {$n == 1 ? "$n $noun" : "$n ${noun}s"}
 }
 
 # ::replay::main --
@@ -707,7 +754,7 @@ proc ::replay::main {argv} {
         # from here on a failed run removes the program of an earlier one
         if {[lindex $target 0] eq "file"} {set R(stale) [list [lindex $target 1]]}
     }
-    CheckMachine $settings $defFile
+    set machine [CheckMachine $settings $defFile]
     if {[dict get $settings -log] ne ""} {
         CheckTarget -log [dict get $settings -log] $clsf $machineFile
     }
@@ -747,7 +794,7 @@ proc ::replay::main {argv} {
     }
     ::fivax::clsf::progress ""
     ClearProgress
-    if {![dict get $opts -quiet]} {Summary $stats}
+    if {![dict get $opts -quiet]} {Summary $stats $machine}
 }
 
 if {[info exists ::argv0] && [file normalize $::argv0] eq [file normalize [info script]]} {

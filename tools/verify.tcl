@@ -34,7 +34,7 @@ namespace eval ::verifytool {
     # S: the state of one run (see Run)
     variable S
     variable Options {
-        {-machine text {} FILE "machine file (required)"}
+        {-machine text {} FILE "machine file, or a shipped machine's name: dmu125p is machines/dmu125p.tcl (required)"}
         {-cl text {} FILE "CLSF the program was posted from: block ends are compared with its CL path"}
         {-msys bool 0 "" "map the CL data through the CLSF's MSYS frame (as replay -msys)"}
         {-tol {real min 0} 0.01 MM "tip tolerance at block ends and inside blocks"}

@@ -2,7 +2,8 @@
 #	(motion) Feeds: the machine's feed clamp and the feed of each cutting
 #	move (spec/kinematics.md section 8). A move with rotary motion gets
 #	inverse time (F = feed / tip path length, 1/min, at most the machine's
-#	inverse_time_max: counted, with the worst slowdown, when clamped), or with -feed dpm the combined feed of all axes
+#	inverse_time_max: a move of the tip counted, with the worst slowdown,
+#	when clamped), or with -feed dpm the combined feed of all axes
 #	(mm and degrees) that keeps the block's time; linear moves and -feed
 #	direct get the tip feed in mm/min.
 
@@ -66,9 +67,11 @@ oo::define ::fivax::motion::Planner {
                     if {$d * $S(itMax) > $f} {
                         set word [list inverse $f [expr {$f / $d}] $d]
                     } else {
-                        # clamped: the move runs slower than programmed
-                        incr S(clamps)
+                        # clamped: a move of the tip runs slower than
+                        # programmed (a turn in place, d 0, has no
+                        # programmed time: a dwell swing)
                         if {$d > 0} {
+                            incr S(clamps)
                             set S(slowdown) [expr {max($S(slowdown), $f / $d / $S(itMax))}]
                         }
                         set word [list inverse $f $S(itMax) $d]

@@ -249,9 +249,9 @@ oo::class create ::fivax::motion::Planner {
     # beyond -tol or -atol after the deepest split), forced
     # (window commits before the merge).
     # dwells (cutting moves that only turn the rotaries with the tip at
-    # rest) and dwellTurn (deg), clamps (inverse-time feeds clamped at the
-    # machine's inverse_time_max) and slowdown (the worst factor by which a
-    # clamped move runs slower than programmed).
+    # rest) and dwellTurn (deg), clamps (inverse-time feeds of moves of the
+    # tip clamped at the machine's inverse_time_max) and slowdown (the
+    # worst factor by which a clamped move runs slower than programmed).
     method stats {} {
         set d [dict create travel [::fivax::num::deg $S(travel)] \
             dwellTurn [::fivax::num::deg $S(dwellTurn)]]
