@@ -10,15 +10,16 @@ namespace import ::tcltest::*
 set ::fileErrors 0
 set here [file dirname [file normalize [info script]]]
 
-# The safety matrix (matrix.test, an hour of one processor) runs beside
-# the other files on the second processor: a whole run (no arguments)
-# starts it as a child run of its own (its own temporary directory), runs
-# the rest here, then waits for it and counts its tests with these.
+# The safety matrix (matrix.test, most of an hour of one processor) runs
+# beside the other files: a whole run (no arguments) starts it as a child
+# run of its own (its own temporary directory; two cases at a time, so
+# that it takes both processors once the rest is done), runs the rest
+# here, then waits for it and counts its tests with these.
 set ::matrixChild ""
 if {![llength $argv]} {
     set matrixLog [file join $here matrix.log]
     set env(FIVAX_MATRIX) 1
-    set env(FIVAX_MATRIX_JOBS) 1
+    set env(FIVAX_MATRIX_JOBS) 2
     # (its report goes to the log; the pipe is only for waiting on it)
     set ::matrixChild [open |[list [info nameofexecutable] [file join $here all.tcl] \
         -file matrix.test -tmpdir [file join $here tmp-matrix] >& $matrixLog] w]
