@@ -659,7 +659,7 @@ proc ::replay::Post {postFile defFile given clsf chan out process progress} {
         if {[lindex $code 0] ne "FIVAX" && [lindex $code 0] ne "REPLAY"} {
             set msg "internal error: $msg"
         }
-        append msg [MsysHint $code $settings [$rt interp]]
+        append msg [MsysHint $code [$rt interp]]
         if {![regexp {^[^\n]*:\d+: } $msg]} {
             set child [$rt interp]
             if {[$child eval {info exists ::mom_cl_line}]} {
@@ -676,12 +676,12 @@ proc ::replay::Post {postFile defFile given clsf chan out process progress} {
 #	Returns the hint added to the message of an error (code: its error
 #	code) when the post in interpreter child stopped on an unreachable
 #	tool axis (its fivax(abortCode)), the CL file's MSYS record turns the
-#	MCS and -msys is off in settings; else "".
-proc ::replay::MsysHint {code settings child} {
+#	MCS and the post's -msys setting is off; else "".
+proc ::replay::MsysHint {code child} {
     if {$code eq {FIVAX MOM ABORT} && [$child eval {info exists ::fivax(abortCode)}]} {
         set code [$child eval {set ::fivax(abortCode)}]
     }
-    if {$code ne {FIVAX MOTION UNREACHABLE} || [dict get $settings -msys]
+    if {$code ne {FIVAX MOTION UNREACHABLE} || [$child eval {dict get $::fivax(settings) -msys}]
             || ![$child eval {array exists ::mom_msys_matrix}]} {return ""}
     set axes [$child eval {lmap i {0 1 2 3 4 5} {set ::mom_msys_matrix($i)}}]
     foreach a $axes b {1 0 0 0 1 0} {
