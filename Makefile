@@ -38,7 +38,7 @@ demo: tcl
 	$(TCLSH) tools/verify.tcl -machine $(DEMO_MACHINE) -cl $(DEMO_CL) -csv out/demo-verify.csv -svg out/demo out/demo.nc
 	$(TCLSH) tools/kinerr.tcl -machine $(DEMO_MACHINE) -d B=0.01 -d C=0.02 -csv out/demo-kinerr.csv -svg out/demo-kinerr.svg out/demo.nc
 
-# The README's pictures (docs/*.svg): the surface paper's path on the
+# The pictures of docs/ (docs/*.svg): the surface paper's path on the
 # TTR-TR machine, posted, verified and its rotary-axis error.
 docs: tcl
 	@mkdir -p out docs

@@ -1,7 +1,7 @@
 # tt-bc -- B-C trunnion table (worked example of the machine file format):
 # B (outer) about +Y through (0, 0, -80), C (carried by B) about +Z through
 # the table reference point; ISO senses; C turns without limits.
-# Example machine, no real machine's data (round numbers, the README's
+# Example machine, no real machine's data (round numbers, the machine-file
 # worked example); its travel is an example value: describe your machine
 # before posting for it.
 name        tt-bc
