@@ -143,7 +143,8 @@ proc ::replay::ParseArgs {argv} {
         Die $msg
     }
     if {[dict get $opts -help]} {
-        puts "usage: tclsh tools/replay.tcl ?options? part.cls\n\nReplays an NX CLSF file through the fivax post.\nOptions:\n[::fivax::opts help [Table]]"
+        # (a reader that stops early, as head or less, is no error)
+        catch {puts "usage: tclsh tools/replay.tcl ?options? part.cls\n\nReplays an NX CLSF file through the fivax post.\nOptions:\n[::fivax::opts help [Table]]"}
         exit 0
     }
     if {[llength $rest] == 0} {

@@ -31,7 +31,8 @@ proc ::fivax::nctool::args {table argv who usage summary {count -1} {required {}
         die $msg
     }
     if {[dict exists $opts -help] && [dict get $opts -help]} {
-        puts "usage: $usage\n\n$summary\nOptions:\n[::fivax::opts::help $table]"
+        # (a reader that stops early, as head or less, is no error)
+        catch {puts "usage: $usage\n\n$summary\nOptions:\n[::fivax::opts::help $table]"}
         exit 0
     }
     if {$count >= 0 && [llength $rest] != $count} {
