@@ -227,12 +227,16 @@ fivax_handler MOM_start_of_program {
     set fivax(out) [fivax::settings output $fivax(settings) $machine $defFile fivax_settings \
         -warn fivax_warn]
     set planOptions [fivax::settings pick $fivax(settings) motion]
-    if {![dict get [$fivax(out) capabilities] inverse] && [dict get $planOptions -feed] eq "inverse"} {
+    set caps [$fivax(out) capabilities]
+    if {![dict get $caps inverse] && [dict get $planOptions -feed] eq "inverse"} {
         # no inverse time (Klartext): F is the feed of all axes together,
-        # degrees counted as mm, which keeps the tip feed
+        # degrees counted as mm, which keeps the tip feed (in TCP mode F
+        # is the tip feed itself: nothing to note)
         dict set planOptions -feed dpm
-        fivax_log "note: [dict get [$fivax(out) capabilities] controller] has no inverse-time feed:\
-            moves with rotary motion get the combined feed of all axes (-feed dpm)"
+        if {![dict get $caps tcp]} {
+            fivax_log "note: [dict get $caps controller] has no inverse-time feed:\
+                moves with rotary motion get the combined feed of all axes (-feed dpm)"
+        }
     }
     set fivax(plan) [fivax::motion create $machine -angle-step [$fivax(out) angleStep] \
         -length-step [lindex [$fivax(out) resolution] 0] -output [$fivax(out) capabilities] {*}$planOptions]
@@ -431,7 +435,8 @@ proc fivax_cutting {what} {
             [format %g $speed] rpm"
     } elseif {$speed eq ""} {
         fivax::Fail POST SPINDLE "$what with the spindle stopped: the CL gives no speed (SPINDL)\
-            and the machine [dict get $fivax(machine) name] has no default_rpm"
+            and the machine [dict get $fivax(machine) name] has no default_rpm: set the speed in\
+            the CAM operation, or a default_rpm in the machine file"
     }
     fivax_spindle_start $speed
 }
@@ -873,7 +878,8 @@ fivax_handler MOM_end_of_program {
     fivax_out [$fivax(out) end]
     fivax_dryrun
     set fivax_summary [dict merge [$fivax(plan) stats] [$fivax(verify) summary] \
-        [dict create toolChanges $fivax(toolChanges) postWarnings $fivax(warnings)]]
+        [dict create toolChanges $fivax(toolChanges) postWarnings $fivax(warnings) \
+            dryrun $fivax(dryrun)]]
     MOM_output_to_listing_device "fivax summary: $fivax_summary"
     fivax_close_log
 }

@@ -729,6 +729,10 @@ proc ::replay::Summary {stats machine} {
                 [Count $clamps {cutting block}] $max $slowdown]
         }
     }
+    if {[info exists dryrun] && $dryrun} {
+        Say "fivax: dry run of the written program: 0 events (spindle, rapids and bodies\
+            against the stock, length compensation, modes, tool lengths, program end)"
+    }
 }
 
 # ::replay::Count -- Returns "n noun", the noun with an s unless n is 1.

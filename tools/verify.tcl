@@ -588,7 +588,7 @@ proc ::verifytool::Report {opts ops names hasCl} {
         incr limitRetracts [dict get $op limitRetracts]
     }
     Say $opts "verify: program: $rapids rapids after cutting[expr {$hasCl ?
-        ", $limitRetracts limit retracts" : ""}] (the post's summary counts the same)"
+        ", $limitRetracts limit retracts" : ""}] (counted as the post's summary counts them)"
     if {$worst ne "" && [lindex $worst 0] ne ""} {
         Say $opts [format "verify: worst NC line %s (%s %.6f mm)" [lindex $worst 0] \
             [dict get {endPos "block end off the CL path" midPos "inside the block"
@@ -761,6 +761,9 @@ proc ::verifytool::main {argv} {
     }
     if {[llength $problems]} {
         foreach p $problems {puts "verify: FAIL: $p"}
+        if {![dict get $opts -msys] && 1 in [lmap op $::verifytool::S(cl) {dict get $op msysTurns}]} {
+            puts "verify: note: the CL file's MSYS record turns its MCS: a program posted with -msys is read with -msys"
+        }
         exit 1
     }
     puts [format "verify: PASS: %d blocks within %g mm and %g deg" [llength $rows] \

@@ -9,7 +9,9 @@
 #	Globals set by the caller: clpath_msys (1: map points through the
 #	CLSF's MSYS frame), clpath_tol (chord tolerance of arcs and NURBS),
 #	mom_kin_output_unit (MM or IN: the unit of the points).
-#	Result: clpath_ops, a list of {name NAME length L points {{P t src rapid} ...}}.
+#	Result: clpath_ops, a list of {name NAME length L points {{P t src rapid} ...}
+#	msysTurns 0|1} (msysTurns: the operation's MSYS record turns its MCS
+#	in the absolute frame, so a program posted with -msys is read with it).
 
 package require fivax
 
@@ -18,6 +20,7 @@ set mom_kin_helical_arc_output_mode QUADRANT
 set clpath_ops {}
 set clpath_op {}
 set clpath_frame {}
+set clpath_turned 0
 
 # clpath_vec -- Returns the three elements of global array name as a list.
 proc clpath_vec {name} {
@@ -54,7 +57,10 @@ proc clpath_open {name} {
 
 # clpath_close -- Adds the open operation to clpath_ops.
 proc clpath_close {} {
-    if {$::clpath_op ne ""} {lappend ::clpath_ops $::clpath_op}
+    if {$::clpath_op ne ""} {
+        dict set ::clpath_op msysTurns $::clpath_turned
+        lappend ::clpath_ops $::clpath_op
+    }
     set ::clpath_op {}
 }
 
@@ -63,8 +69,12 @@ proc MOM_end_of_path {} {clpath_close}
 proc MOM_end_of_program {} {clpath_close}
 
 proc MOM_msys {} {
+    set m [lmap i {0 1 2 3 4 5 6 7 8} {set ::mom_msys_matrix($i)}]
+    set ::clpath_turned 0
+    foreach a $m b {1 0 0 0 1 0 0 0 1} {
+        if {abs($a - $b) > 1e-9} {set ::clpath_turned 1}
+    }
     if {$::clpath_msys} {
-        set m [lmap i {0 1 2 3 4 5 6 7 8} {set ::mom_msys_matrix($i)}]
         set ::clpath_frame [list [clpath_vec mom_msys_origin] [lrange $m 0 2] [lrange $m 3 5] \
             [lrange $m 6 8]]
     }
