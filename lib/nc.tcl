@@ -50,6 +50,7 @@ namespace eval ::fivax::nc {
         {-separator text " " TEXT "text between words"}
         {-eol any "" TEXT "text at the end of every block"}
         {-warn any "" CMD "command prefix called with the message of a MIN/MAX Warning, or when numbering stops"}
+        {-overflow any "" CMD "command prefix called with the next sequence number when it passes -seq-max: numbering goes on when it restarts the sequence"}
     }
 }
 
@@ -188,8 +189,9 @@ oo::class create ::fivax::nc::Writer {
     # word: a block that fails changes none of it. The empty name ""
     # stands for literal text, written as it is every time.
     # Numbering: N<seq> first while numbering is on and the number within
-    # -seq-max (then the number advances); past -seq-max numbering stops
-    # with one warning: never a repeated N.
+    # -seq-max (then the number advances); past -seq-max the -overflow
+    # command may restart it, else numbering stops with one warning:
+    # never a number past -seq-max.
     # Errors: {FIVAX NC ADDRESS} for an undefined address name.
     method block {words {numbered 1} {around {}}} {
         set out ""
@@ -263,8 +265,7 @@ oo::class create ::fivax::nc::Writer {
         if {![llength $upd]} {return ""}
         if {[llength $around]} {set out [lindex $around 0]$out[lindex $around 1]}
         if {!$numbered || !$S(seqOn)} {return $out$S(eol)}
-        if {$S(seqNext) > $S(seqMax)} {
-            my StopNumbering
+        if {$S(seqNext) > $S(seqMax) && ![my Overflow]} {
             return $out$S(eol)
         }
         lassign $Addr(N) mode kind spec leader trailer
@@ -394,6 +395,18 @@ oo::class create ::fivax::nc::Writer {
                 -seq-max {set S(seqMax) $v}
             }
         }
+    }
+
+    # Overflow --
+    #	The next number passed -seq-max: returns 1 when the -overflow
+    #	command restarted the numbering within it, else stops numbering
+    #	(with a warning) and returns 0.
+    method Overflow {} {
+        set cmd [dict get $S(cfg) -overflow]
+        if {[llength $cmd]} {{*}$cmd $S(seqNext)}
+        if {$S(seqOn) && $S(seqNext) <= $S(seqMax)} {return 1}
+        my StopNumbering
+        return 0
     }
 
     # Stops numbering past -seq-max, with a warning.
