@@ -106,13 +106,24 @@ namespace eval ::fivax::mom {
         ::MOM_before_output
         return $::mom_o_buffer
     }
+    # The body of the MOM_do_template the runtime defines in the post
+    # interpreter: the block template name's compiled proc (see
+    # TemplateScript).
+    variable doTemplate {
+        set proc ::fivax::mom::runtime::tpl::$name
+        if {[namespace which -command $proc] eq ""} {
+            return -code error -errorcode {FIVAX MOM TEMPLATE} \
+                "MOM_do_template: no block template '$name'"
+        }
+        $proc $mode
+    }
     # Waiting operations (elements of the ops list) past which a record
     # ends the batch: the runtime crosses into the post interpreter when
     # about this many are waiting (a plain GOTO makes 21).
     variable batch 4000
     # MOM_* commands with behaviour (implemented by Cmd<name> below).
     variable commands {
-        MOM_output_literal MOM_output_text MOM_do_template MOM_force
+        MOM_output_literal MOM_output_text MOM_force
         MOM_suppress MOM_set_seq_on MOM_set_seq_off MOM_reset_sequence
         MOM_abort MOM_abort_event MOM_output_to_listing_device
         MOM_log_message MOM_reload_variable MOM_reload_kinematics
@@ -269,15 +280,95 @@ proc ::fivax::mom::CycleParams {rec scale} {
     list [dict get $cycleEvents $key] $p
 }
 
-# ::fivax::mom::ArcPlane --
-#	Returns mom_pos_arc_plane of an arc about axis: XY, YZ or ZX when the
-#	axis is the third axis of that plane, else OTHER.
-proc ::fivax::mom::ArcPlane {axis} {
-    lassign [::fivax::vec::unit $axis] i j k
-    foreach c [list $k $i $j] plane {XY YZ ZX} {
-        if {abs($c) > 1.0 - 1e-9} {return $plane}
+# ::fivax::mom::TemplateScript --
+#	Returns the script that defines, in the post interpreter, one proc
+#	::fivax::mom::runtime::tpl::<name> {mode} per BLOCK_TEMPLATE of the
+#	.def dict defDict: it evaluates the leaders of the block's addresses
+#	and its words, compiled once with the proc (the .def is post code, as
+#	NX takes it; CL data reach it only as the values of variables), and
+#	hands them to the runtime in one call (Block: TemplateBlock). A word
+#	of a String address is text with the post's variables in it (subst),
+#	any other an expression (expr); a \opt word that fails is left out,
+#	any other failure is {FIVAX MOM TEMPLATE} "MOM_do_template NAME:
+#	ADDRESS: message". The variables the texts name are the post's
+#	globals; a text with a command in it runs in the global frame.
+proc ::fivax::mom::TemplateScript {defDict} {
+    set script "namespace eval ::fivax::mom::runtime::tpl {}\n"
+    dict for {name words} [dict get $defDict blocks] {
+        set body [TemplateBody $defDict $name $words]
+        append script [list proc ::fivax::mom::runtime::tpl::$name {_fx_mode} $body] \n
     }
-    return OTHER
+    return $script
+}
+
+# ::fivax::mom::TemplateBody -- Returns the body of block template name's proc (see TemplateScript).
+proc ::fivax::mom::TemplateBody {defDict name words} {
+    set vars {}
+    set code {}
+    foreach word $words {
+        if {[dict exists $word literal]} {
+            # a literal word goes out as a forced address-less text
+            lappend code [list lappend _fx_w {} [dict get $word literal]]
+            continue
+        }
+        set addr [dict get $word address]
+        lappend code [list set _fx_a $addr]
+        set leader [dict get $defDict addresses $addr leader_expr]
+        if {$leader ne ""} {
+            lappend vars {*}[TemplateVars $leader]
+            lappend code "lappend _fx_l [list $addr] \[[TemplateEval expr $leader]\]"
+        }
+        set text [dict get $word expr]
+        lappend vars {*}[TemplateVars $text]
+        set eval [TemplateEval [expr {[::fivax::def::textAddress $defDict $addr]
+            ? "subst" : "expr"}] $text]
+        if {[dict get $word opt]} {
+            lappend code "if {!\[[list catch $eval _fx_v]\]} {lappend _fx_w [list $addr] \$_fx_v}"
+        } else {
+            lappend code "lappend _fx_w [list $addr] \[$eval\]"
+        }
+    }
+    set vars [lsearch -all -inline -not -glob [lsort -unique $vars] _fx_*]
+    set head [list set _fx_w {}]\n[list set _fx_l {}]
+    if {[llength $vars]} {set head [list global {*}$vars]\n$head}
+    set fail "[list return -code error -errorcode {FIVAX MOM TEMPLATE}] \[[list format \
+        {MOM_do_template %s: %s: %s} $name] \$_fx_a \$_fx_msg\]"
+    return "$head\n[list try [join $code \n] on error _fx_msg $fail]\n[list \
+        ::fivax::mom::runtime::Block $name] \$_fx_mode \$_fx_l \$_fx_w"
+}
+
+# ::fivax::mom::TemplateEval --
+#	Returns the command that evaluates .def text with how (expr or subst)
+#	in a template proc: compiled in the proc, or in the global frame
+#	(uplevel #0) when the text has a command in it.
+proc ::fivax::mom::TemplateEval {how text} {
+    if {[string first "\[" $text] >= 0} {return [list uplevel #0 [list $how $text]]}
+    list $how $text
+}
+
+# ::fivax::mom::TemplateVars -- Returns the names of the variables .def text reads as $name or ${name}.
+proc ::fivax::mom::TemplateVars {text} {
+    set names {}
+    foreach {- name} [regexp -all -inline {\$([A-Za-z0-9_]+)} $text] {lappend names $name}
+    foreach {- name} [regexp -all -inline {\$\{([^\}]*)\}} $text] {lappend names $name}
+    return $names
+}
+
+# ::fivax::mom::ArcFrame --
+#	Returns {axis sense plane} of an arc about axis turning by sense (1:
+#	counter-clockwise about it, -1 clockwise) as NX hands it to the post:
+#	in a principal plane (plane XY, YZ or ZX) about that plane's positive
+#	normal, the sense turned with it (a post writes G2 for CLW), else as
+#	it is (plane OTHER).
+proc ::fivax::mom::ArcFrame {axis sense} {
+    set u [::fivax::vec::unit $axis]
+    foreach c [list [lindex $u 2] [lindex $u 0] [lindex $u 1]] plane {XY YZ ZX} {
+        if {abs($c) > 1.0 - 1e-9} {
+            if {$c < 0} {return [list [::fivax::vec::scale -1.0 $axis] [expr {-$sense}] $plane]}
+            return [list $axis $sense $plane]
+        }
+    }
+    list $axis $sense OTHER
 }
 
 # ::fivax::mom::Where -- Returns FILE:LINE of record rec.
@@ -322,6 +413,9 @@ oo::class create ::fivax::mom::Runtime {
         $child eval {namespace eval ::fivax::mom::runtime {variable event ""}}
         $child eval [list proc ::fivax::mom::runtime::Dispatch {ops} $::fivax::mom::dispatch]
         $child eval [list proc ::fivax::mom::runtime::BeforeOutput {text} $::fivax::mom::beforeOutput]
+        $child alias ::fivax::mom::runtime::Block [namespace which my] TemplateBlock
+        $child eval [list proc ::MOM_do_template {name {mode ""}} $::fivax::mom::doTemplate]
+        $child eval [::fivax::mom::TemplateScript $S(defDict)]
         if {[llength $S(autopath)]} {
             $child eval [list set ::auto_path $S(autopath)]
         }
@@ -700,7 +794,8 @@ oo::class create ::fivax::mom::Runtime {
     #	Fires MOM_machine_mode before the first operation (NX fires it when
     #	the mode changes: replay's operations are all MILL), then
     #	MOM_start_of_path with the gathered header (tool, spindle and
-    #	coolant globals set), MOM_msys, the tool event when the tool differs
+    #	coolant globals set; tool and spindle globals the CL never gave at
+    #	NX's defaults: 0, CLW, RPM), MOM_msys, the tool event when the tool differs
     #	from the previous operation's, then the gathered control events.
     method FlushHeader {} {
         if {!$S(headerPending)} return
@@ -720,7 +815,8 @@ oo::class create ::fivax::mom::Runtime {
                 mom_tool_length_adjust_register $n]
         }
         foreach {var default} {mom_tool_length 0.0 mom_tool_diameter 0.0
-            mom_tool_corner1_radius 0.0 mom_tool_name ""} {
+            mom_tool_corner1_radius 0.0 mom_tool_name "" mom_spindle_speed 0.0
+            mom_spindle_direction CLW mom_spindle_mode RPM} {
             if {![my Child [list info exists ::$var]]} {
                 my Globals [list $var $default]
             }
@@ -920,7 +1016,9 @@ oo::class create ::fivax::mom::Runtime {
     #	mom_arc_direction is the turning sense about mom_arc_axis: NX-style
     #	CIRCLEs (11 numbers: NX, Makino) turn clockwise about their vector,
     #	the short APT form (6 or 7 numbers: Creo, SolidWorks CAM)
-    #	counter-clockwise (nx-conventions.md 5.4). An arc with no position
+    #	counter-clockwise (nx-conventions.md 5.4); an arc in a principal
+    #	plane is about that plane's positive normal (see ArcFrame), with
+    #	mom_pos_arc_center, _axis and _plane. An arc with no position
     #	before it has no start: its end is reached by a linear move, with
     #	a warning (a post would take an arc from its end to its end for a
     #	full circle).
@@ -958,18 +1056,19 @@ oo::class create ::fivax::mom::Runtime {
         set max [dict get {FULL_CIRCLE 360.0 QUADRANT 90.0 END_POINT Inf} $mode]
         set pieces [my Curve $circle ARC CIRCLE arcSplit $start $end $center $axis $sense $times \
             [expr {$max * $pi / 180.0}]]
+        lassign [::fivax::mom::ArcFrame $axis $sense] nxAxis nxSense plane
         set pairs [list mom_arc_radius [dict get $circle radius] \
-            mom_arc_direction [expr {$sense < 0 ? "CLW" : "CCLW"}]]
+            mom_arc_direction [expr {$nxSense < 0 ? "CLW" : "CCLW"}]]
         foreach key {tolerance intol tool_diameter tool_radius} {
             if {[dict exists $circle $key]} {
                 lappend pairs mom_arc_[string map {intol intol_fraction} $key] [dict get $circle $key]
             }
         }
         my Array mom_arc_center $center
-        my Array mom_arc_axis $axis
+        my Array mom_arc_axis $nxAxis
         my Array mom_pos_arc_center $center
-        my Array mom_pos_arc_axis $axis
-        my Globals [list mom_pos_arc_plane [::fivax::mom::ArcPlane $axis]]
+        my Array mom_pos_arc_axis $nxAxis
+        my Globals [list mom_pos_arc_plane $plane]
         set event [expr {$helix && [my Has MOM_helix_move] ? "helix_move" : "circular_move"}]
         set from $start
         foreach piece $pieces {
@@ -1374,67 +1473,21 @@ oo::class create ::fivax::mom::Runtime {
         my Cmd_output_text [$S(nc) line $text]
     }
 
-    # MOM_do_template: formats a .def block template with the post's globals.
-    method Cmd_do_template {name {mode ""}} {
-        if {![dict exists $S(defDict) blocks $name]} {
-            ::fivax::Fail MOM TEMPLATE "MOM_do_template: no block template '$name'"
-        }
-        set words {}
-        foreach word [dict get $S(defDict) blocks $name] {
-            if {[dict exists $word literal]} {
-                # A literal word goes out as a forced address-less text.
-                lappend words {} [dict get $word literal]
-                continue
+    # TemplateBlock --
+    #	The end of MOM_do_template (see ::fivax::mom::TemplateScript): sets
+    #	the leaders that changed (flat address/text list leaders), formats
+    #	the words (flat address/value list, "" for a literal) as a block,
+    #	writes it unless mode is CREATE, and returns it.
+    method TemplateBlock {name mode leaders words} {
+        foreach {addr text} $leaders {
+            if {![info exists S(leader:$addr)] || $S(leader:$addr) ne $text} {
+                $S(nc) address $addr -leader $text
+                set S(leader:$addr) $text
             }
-            set addr [dict get $word address]
-            my Leader $addr
-            if {[dict exists $word expr] && [dict get $word expr] ne ""} {
-                # Template text is post code (the .def), evaluated with expr
-                # rules in the post interpreter as NX does; never CL data.
-                try {
-                    if {[::fivax::def::textAddress $S(defDict) $addr]} {
-                        set value [my GlobalSubst [dict get $word expr]]
-                    } else {
-                        set value [my GlobalExpr [dict get $word expr]]
-                    }
-                } on error {msg} {
-                    if {[dict exists $word opt] && [dict get $word opt]} continue
-                    ::fivax::Fail MOM TEMPLATE "MOM_do_template $name: $addr: $msg"
-                }
-            } else {
-                set value ""
-            }
-            lappend words $addr $value
         }
         set line [$S(nc) block $words]
         if {$mode ne "CREATE"} {my Cmd_output_text $line}
         return $line
-    }
-
-    # GlobalExpr --
-    #	Evaluates a .def expression (post code, never CL data) with expr rules
-    #	in the post interpreter's global namespace, as NX does, even while a
-    #	handler is running.
-    method GlobalExpr {text} {
-        $S(interp) eval [list namespace eval :: [list expr $text]]
-    }
-
-    # GlobalSubst --
-    #	Returns the text of a .def String word (post code, never CL data)
-    #	with the post's variables and commands substituted, in the post
-    #	interpreter's global namespace.
-    method GlobalSubst {text} {
-        $S(interp) eval [list namespace eval :: [list subst $text]]
-    }
-
-    # Leader --
-    #	Sets the leader of address addr from its .def LEADER expression (post
-    #	code such as [$mom_sys_leader(X)]), evaluated in the post interpreter.
-    method Leader {addr} {
-        if {![dict exists $S(defDict) addresses $addr leader_expr]} return
-        set text [dict get $S(defDict) addresses $addr leader_expr]
-        if {$text eq ""} return
-        $S(nc) address $addr -leader [my GlobalExpr $text]
     }
 
     # MOM_force Always|Once|Off addr...

@@ -632,7 +632,7 @@ proc ::replay::Post {postFile defFile given clsf chan out process progress} {
     set globals {}
     if {$out ne ""} {
         dict set globals mom_output_file_full_name $out
-        dict set globals mom_output_file_directory [file dirname $out]
+        dict set globals mom_output_file_directory [file dirname $out]/
         dict set globals mom_output_file_basename [file rootname [file tail $out]]
         dict set globals mom_output_file_suffix [string trimleft [file extension $out] .]
     }
