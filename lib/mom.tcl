@@ -97,14 +97,26 @@ namespace eval ::fivax::mom {
         }
         set event $saved
     }
-    # The body of the proc ::fivax::mom::runtime::BeforeOutput {text} in
-    # the post interpreter: the block text in mom_o_buffer through the
-    # post's MOM_before_output, as NX passes every line; returns what the
-    # handler left there.
-    variable beforeOutput {
-        set ::mom_o_buffer $text
-        ::MOM_before_output
-        return $::mom_o_buffer
+    # The body of the proc ::fivax::mom::runtime::Output {text} in the
+    # post interpreter, where every line goes out (MOM_output_text,
+    # MOM_output_literal, MOM_do_template): the line in mom_o_buffer
+    # through the post's MOM_before_output, as NX passes it (hook: the
+    # post has one; lines the handler writes itself skip it), then to
+    # the runtime (Write). Returns the line written.
+    variable output {
+        variable hook
+        variable busy
+        if {$hook && !$busy && $text ne ""} {
+            set busy 1
+            try {
+                set ::mom_o_buffer $text
+                ::MOM_before_output
+                set text $::mom_o_buffer
+            } finally {
+                set busy 0
+            }
+        }
+        ::fivax::mom::runtime::Write $text
     }
     # The body of the MOM_do_template the runtime defines in the post
     # interpreter: the block template name's compiled proc (see
@@ -123,8 +135,7 @@ namespace eval ::fivax::mom {
     variable batch 4000
     # MOM_* commands with behaviour (implemented by Cmd<name> below).
     variable commands {
-        MOM_output_literal MOM_output_text MOM_force
-        MOM_suppress MOM_set_seq_on MOM_set_seq_off MOM_reset_sequence
+        MOM_force MOM_suppress MOM_set_seq_on MOM_set_seq_off MOM_reset_sequence
         MOM_abort MOM_abort_event MOM_output_to_listing_device
         MOM_log_message MOM_reload_variable MOM_reload_kinematics
         MOM_update_kinematics MOM_ask_event_type MOM_ask_env_var
@@ -285,8 +296,10 @@ proc ::fivax::mom::CycleParams {rec scale} {
 #	::fivax::mom::runtime::tpl::<name> {mode} per BLOCK_TEMPLATE of the
 #	.def dict defDict: it evaluates the leaders of the block's addresses
 #	and its words, compiled once with the proc (the .def is post code, as
-#	NX takes it; CL data reach it only as the values of variables), and
-#	hands them to the runtime in one call (Block: TemplateBlock). A word
+#	NX takes it; CL data reach it only as the values of variables), hands
+#	them to the runtime in one call (Block: TemplateBlock, with the
+#	leaders that changed) and writes the block (Output) unless mode is
+#	CREATE. A word
 #	of a String address is text with the post's variables in it (subst),
 #	any other an expression (expr); a \opt word that fails is left out,
 #	any other failure is {FIVAX MOM TEMPLATE} "MOM_do_template NAME:
@@ -305,6 +318,7 @@ proc ::fivax::mom::TemplateScript {defDict} {
 proc ::fivax::mom::TemplateBody {defDict name words} {
     set vars {}
     set code {}
+    set leaders 0
     foreach word $words {
         if {[dict exists $word literal]} {
             # a literal word goes out as a forced address-less text
@@ -315,8 +329,11 @@ proc ::fivax::mom::TemplateBody {defDict name words} {
         lappend code [list set _fx_a $addr]
         set leader [dict get $defDict addresses $addr leader_expr]
         if {$leader ne ""} {
+            # a leader goes to the runtime when it changed
             lappend vars {*}[TemplateVars $leader]
-            lappend code "lappend _fx_l [list $addr] \[[TemplateEval expr $leader]\]"
+            set leaders 1
+            lappend code "set _fx_v \[[TemplateEval expr $leader]\]" \
+                "if {!\[[list info exists _fx_leader($addr)]\] || \$[list _fx_leader($addr)] ne \$_fx_v} {[list lappend _fx_l $addr] \$_fx_v}"
         }
         set text [dict get $word expr]
         lappend vars {*}[TemplateVars $text]
@@ -331,10 +348,16 @@ proc ::fivax::mom::TemplateBody {defDict name words} {
     set vars [lsearch -all -inline -not -glob [lsort -unique $vars] _fx_*]
     set head [list set _fx_w {}]\n[list set _fx_l {}]
     if {[llength $vars]} {set head [list global {*}$vars]\n$head}
+    set tail {set _fx_line [::fivax::mom::runtime::Block $_fx_l $_fx_w]}
+    if {$leaders} {
+        set head "variable _fx_leader\n$head"
+        append tail \n {foreach {_fx_a _fx_v} $_fx_l {set _fx_leader($_fx_a) $_fx_v}}
+    }
+    append tail \n {if {$_fx_mode eq "CREATE"} {return $_fx_line}} \n \
+        {::fivax::mom::runtime::Output $_fx_line}
     set fail "[list return -code error -errorcode {FIVAX MOM TEMPLATE}] \[[list format \
         {MOM_do_template %s: %s: %s} $name] \$_fx_a \$_fx_msg\]"
-    return "$head\n[list try [join $code \n] on error _fx_msg $fail]\n[list \
-        ::fivax::mom::runtime::Block $name] \$_fx_mode \$_fx_l \$_fx_w"
+    return "$head\n[list try [join $code \n] on error _fx_msg $fail]\n$tail"
 }
 
 # ::fivax::mom::TemplateEval --
@@ -396,7 +419,7 @@ oo::class create ::fivax::mom::Runtime {
             point {} tool {} toolKey {} prevToolKey {} toolChanged 0 firstMove 1
             toolNames {} msysPending 0 unknown {} udes {}
             scale 1.0 clUnit MM outUnit MM unitsSeen 0 firstUnit MM nurbs {}
-            files {} inBefore 0 machineTime 0.0 cuttingTime 0.0 fpm 0.0 moveLength 0.0
+            files {} machineTime 0.0 cuttingTime 0.0 fpm 0.0 moveLength 0.0
             modeFired 0
         }
         set my [namespace which my]
@@ -412,8 +435,17 @@ oo::class create ::fivax::mom::Runtime {
         set child $S(interp)
         $child eval {namespace eval ::fivax::mom::runtime {variable event ""}}
         $child eval [list proc ::fivax::mom::runtime::Dispatch {ops} $::fivax::mom::dispatch]
-        $child eval [list proc ::fivax::mom::runtime::BeforeOutput {text} $::fivax::mom::beforeOutput]
-        $child alias ::fivax::mom::runtime::Block [namespace which my] TemplateBlock
+        $child eval {namespace eval ::fivax::mom::runtime {variable hook 0; variable busy 0}}
+        $child eval [list proc ::fivax::mom::runtime::Output {text} $::fivax::mom::output]
+        $child eval {
+            proc ::MOM_output_text {text args} {::fivax::mom::runtime::Output $text}
+            proc ::MOM_output_literal {text args} {
+                ::fivax::mom::runtime::Output [::fivax::mom::runtime::Line $text]
+            }
+        }
+        foreach {cmd method} {Write Write Line Line Block TemplateBlock} {
+            $child alias ::fivax::mom::runtime::$cmd [namespace which my] $method
+        }
         $child eval [list proc ::MOM_do_template {name {mode ""}} $::fivax::mom::doTemplate]
         $child eval [::fivax::mom::TemplateScript $S(defDict)]
         if {[llength $S(autopath)]} {
@@ -441,7 +473,7 @@ oo::class create ::fivax::mom::Runtime {
         set S(rapidFeed) [my PostVar mom_kin_rapid_feed_rate \
             [expr {$S(outUnit) eq "IN" ? 400.0 : 10000.0}]]
         # (known now: Has would run waiting handlers from inside one)
-        set S(beforeOutput) [my Has MOM_before_output]
+        $child eval [list set ::fivax::mom::runtime::hook [my Has MOM_before_output]]
         my Has MOM_catch_warning
     }
 
@@ -1391,12 +1423,11 @@ oo::class create ::fivax::mom::Runtime {
         }
     }
 
-    # MOM_output_text: one literal line, never numbered, to the output
-    # channel and the files the post opened (an empty one is not written);
-    # every line goes out here, through the post's MOM_before_output as
-    # NX passes it (see BeforeOutput).
-    method Cmd_output_text {text args} {
-        if {$S(beforeOutput) && !$S(inBefore)} {set text [my BeforeOutput $text]}
+    # Write --
+    #	The end of every output line (see the output variable): text, when
+    #	not empty, to the output channel and the files the post opened;
+    #	returns it.
+    method Write {text} {
         if {$text ne ""} {
             incr S(blocks)
             foreach chan $S(outputs) {puts $chan $text}
@@ -1404,17 +1435,9 @@ oo::class create ::fivax::mom::Runtime {
         return $text
     }
 
-    # BeforeOutput --
-    #	Returns line text as the post's MOM_before_output leaves it in
-    #	mom_o_buffer (lines the handler writes itself skip it).
-    method BeforeOutput {text} {
-        if {$text eq ""} {return $text}
-        set S(inBefore) 1
-        try {
-            $S(interp) eval [list ::fivax::mom::runtime::BeforeOutput $text]
-        } finally {
-            set S(inBefore) 0
-        }
+    # Line -- Returns text as one block of MOM_output_literal, numbered when sequencing is on.
+    method Line {text} {
+        $S(nc) line $text
     }
 
     # MOM_open_output_file path: every line from here on also goes to the
@@ -1468,26 +1491,16 @@ oo::class create ::fivax::mom::Runtime {
         $S(interp) eval ::MOM_catch_warning
     }
 
-    # MOM_output_literal: one literal line, numbered when sequencing is on.
-    method Cmd_output_literal {text args} {
-        my Cmd_output_text [$S(nc) line $text]
-    }
-
     # TemplateBlock --
-    #	The end of MOM_do_template (see ::fivax::mom::TemplateScript): sets
-    #	the leaders that changed (flat address/text list leaders), formats
-    #	the words (flat address/value list, "" for a literal) as a block,
-    #	writes it unless mode is CREATE, and returns it.
-    method TemplateBlock {name mode leaders words} {
+    #	The block of MOM_do_template (see ::fivax::mom::TemplateScript):
+    #	sets the leaders that changed (flat address/text list leaders) and
+    #	returns the words (flat address/value list, "" for a literal)
+    #	formatted as a block.
+    method TemplateBlock {leaders words} {
         foreach {addr text} $leaders {
-            if {![info exists S(leader:$addr)] || $S(leader:$addr) ne $text} {
-                $S(nc) address $addr -leader $text
-                set S(leader:$addr) $text
-            }
+            $S(nc) address $addr -leader $text
         }
-        set line [$S(nc) block $words]
-        if {$mode ne "CREATE"} {my Cmd_output_text $line}
-        return $line
+        $S(nc) block $words
     }
 
     # MOM_force Always|Once|Off addr...

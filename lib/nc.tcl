@@ -65,7 +65,9 @@ proc ::fivax::nc::create {args} {
 
 oo::class create ::fivax::nc::Writer {
     # Addr($name) (see the file header), Mem($name) (the modal memory:
-    # {text value} of the last word written); the rest in S (few declared
+    # {text value} of the last word written, {text value 1} when the
+    # value was within the limits and the format has not changed since:
+    # the same value writes the same text); the rest in S (few declared
     # variables: TclOO resolves every local of a method against each
     # declared name on every call): S(cfg) the option dict, S(names) the
     # address names in definition order; S(sep), S(eol), S(seqOn),
@@ -115,6 +117,8 @@ oo::class create ::fivax::nc::Writer {
         }
         if {[info exists Addr($name)]} {
             lassign $Addr($name) mode kind spec leader trailer - - limits fmt base fa sa once
+            # (its format or limits may change: the last value is no longer known to format as then)
+            set Mem($name) [lrange $Mem($name) 0 1]
         } else {
             if {$name eq "" || [regexp {[\s,]} $name]} {
                 ::fivax::Fail NC ADDRESS "bad address name \"$name\""
@@ -205,7 +209,14 @@ oo::class create ::fivax::nc::Writer {
                 switch -- $mode {
                     s continue
                     S {lappend once $name; continue}
+                    m {
+                        # the value last written, within the limits, formats
+                        # as then: a modal word left out unformatted
+                        lassign $Mem($name) - last within
+                        if {$within ne "" && $last eq $v} continue
+                    }
                 }
+                set within 1
                 # Number in, decimal: Tcl reads "017" as octal, so integers and
                 # strings go through scan; plain doubles are used as they are
                 # (x is v itself, or what scan read: a second conversion, the
@@ -221,6 +232,7 @@ oo::class create ::fivax::nc::Writer {
                         || [scan $v %lf%c x x] == 1} {
                     if {!($x >= $lo && $x <= $hi)} {
                         # beyond a MIN/MAX, or not finite
+                        set within 0
                         set x [my Bound $name $x]
                         if {!($x > -Inf && $x < Inf)} {
                             ::fivax::Fail NC VALUE "address $name: value is not finite: $v"
@@ -254,7 +266,7 @@ oo::class create ::fivax::nc::Writer {
                 append out $sep$leader$t$trailer
                 set sep $S(sep)
                 lappend upd $name
-                lappend upd [list $t $v]
+                lappend upd [expr {$within ? [list $t $v 1] : [list $t $v]}]
             }
         } trap {TCL READ VARNAME} {msg opts} {
             if {[info exists Addr($name)]} {return -options $opts $msg}
@@ -274,6 +286,8 @@ oo::class create ::fivax::nc::Writer {
             set t $S(seqNext)
         } elseif {$kind eq "d"} {
             set t [::format $spec $S(seqNext)]
+        } elseif {$kind eq "a"} {
+            set t [::fivax::nc::Amp $spec $S(seqNext)]
         } else {
             set t [::fivax::nc::format [lindex $Addr(N) 8] $S(seqNext)]
         }

@@ -35,6 +35,9 @@ if {![info exists mom_sys_post_initialized]} {
     set mom_sys_spindle_direction_code(CCLW) 4
     set mom_sys_spindle_direction_code(OFF) 5
     set mom_sys_coolant_code(OFF) 9
+    set mom_sys_coolant_code(ON) 8
+    set mom_sys_feed_rate_mode_code(MMPM) 94
+    set mom_sys_feed_rate_mode_code(IPM) 94
     set mom_sys_end_of_program_code 30
     set mom_sys_feed_param(MMPM,format) Feed
     set mom_kin_machine_type 3_axis_mill
@@ -49,8 +52,12 @@ if {![info exists mom_sys_post_initialized]} {
 
 # MOM_start_of_program -- Numbering off until the header; the working directory.
 proc MOM_start_of_program {} {
-    global pb_started pb_tmp_dir mom_warning_info
+    global pb_started pb_tmp_dir mom_warning_info mom_cutcom_status mom_cutcom_plane
+    global mom_coolant_status
     set pb_started 0
+    set mom_cutcom_status OFF
+    set mom_cutcom_plane XY
+    set mom_coolant_status ON
     set pb_tmp_dir [MOM_ask_env_var UGII_TMP_DIR]
     set mom_warning_info ""
     SEQNO_RESET
