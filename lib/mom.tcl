@@ -152,7 +152,7 @@ namespace eval ::fivax::mom {
         MOM_update_kinematics MOM_ask_event_type MOM_ask_env_var
         MOM_ask_address_value MOM_set_address_format MOM_display_message
         MOM_validate_machine_model MOM_has_definition_element
-        MOM_open_output_file MOM_close_output_file
+        MOM_open_output_file MOM_close_output_file MOM_remove_file
     }
     # MOM_* commands a Post Builder post may probe: harmless no-ops here.
     variable stubs {
@@ -161,7 +161,7 @@ namespace eval ::fivax::mom {
         MOM_add_to_line_buffer MOM_load_definition_file MOM_set_env_var MOM_skip_handler_to_event
         MOM_set_debug_mode MOM_reload_iks_parameters MOM_load_kinematics
         MOM_cancel_suppress_force_once_per_event MOM_list_user_defined_events
-        MOM_load_oper_ude_exps MOM_remove_file MOM_run_user_function
+        MOM_load_oper_ude_exps MOM_run_user_function
         MOM_ask_oper_csys MOM_ask_syslog_name MOM_check_out_license
         MOM_convert_point MOM_abort_program MOM_do_template_file
         MOM_map_to_rotated_csys MOM_rotate_mach_csys MOM_ask_ess_exp_value
@@ -1479,6 +1479,13 @@ oo::class create ::fivax::mom::Runtime {
             return ""
         }
         set S(outputs) [lsearch -all -inline -exact -not $S(outputs) $chan]
+        return ""
+    }
+
+    # MOM_remove_file path: removes the file (Post Builder's base file
+    # removes an earlier run's output before it reopens the output file).
+    method Cmd_remove_file {path args} {
+        file delete -- $path
         return ""
     }
 

@@ -60,6 +60,7 @@ proc MOM_start_of_program {} {
     set mom_coolant_status ON
     set pb_tmp_dir [MOM_ask_env_var UGII_TMP_DIR]
     set mom_warning_info ""
+    OPEN_FILES
     SEQNO_RESET
     MOM_set_seq_off
 }

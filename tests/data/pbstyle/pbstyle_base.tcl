@@ -34,6 +34,17 @@ proc SEQNO_SET {} {
     MOM_set_seq_on
 }
 
+# OPEN_FILES --
+#	The output file anew, as Post Builder's base file does: closed, an
+#	earlier run's removed, opened again.
+proc OPEN_FILES {} {
+    global mom_output_file_full_name
+    if {![info exists mom_output_file_full_name]} return
+    MOM_close_output_file $mom_output_file_full_name
+    if {[file exists $mom_output_file_full_name]} {MOM_remove_file $mom_output_file_full_name}
+    if {![file exists $mom_output_file_full_name]} {MOM_open_output_file $mom_output_file_full_name}
+}
+
 # MOM_catch_warning -- NX's warnings: a sequence number past the maximum restarts the numbering.
 proc MOM_catch_warning {} {
     global mom_warning_info mom_seqnum pb_warnings
