@@ -108,15 +108,16 @@ namespace eval ::fivax::mom {
         }
         set event $saved
     }
-    # The body of the proc ::fivax::mom::runtime::Output {text} in the
-    # post interpreter, where every line goes out (MOM_output_text,
-    # MOM_output_literal, MOM_do_template): the line in mom_o_buffer
+    # The body of MOM_output_text {text args} and of the proc
+    # ::fivax::mom::runtime::Output {text args} in the post interpreter,
+    # where every line goes out (MOM_output_text, MOM_output_literal,
+    # MOM_do_template, whatever the post redefines): the line in mom_o_buffer
     # through the post's MOM_before_output, as NX passes it (hook: the
     # post has one; lines the handler writes itself skip it), then to
     # the runtime (Write). Returns the line written.
     variable output {
-        variable hook
-        variable busy
+        variable ::fivax::mom::runtime::hook
+        variable ::fivax::mom::runtime::busy
         if {$hook && !$busy && $text ne ""} {
             set busy 1
             try {
@@ -447,9 +448,10 @@ oo::class create ::fivax::mom::Runtime {
         $child eval {namespace eval ::fivax::mom::runtime {variable event ""}}
         $child eval [list proc ::fivax::mom::runtime::Dispatch {ops} $::fivax::mom::dispatch]
         $child eval {namespace eval ::fivax::mom::runtime {variable hook 0; variable busy 0}}
-        $child eval [list proc ::fivax::mom::runtime::Output {text} $::fivax::mom::output]
+        foreach proc {::fivax::mom::runtime::Output ::MOM_output_text} {
+            $child eval [list proc $proc {text args} $::fivax::mom::output]
+        }
         $child eval {
-            proc ::MOM_output_text {text args} {::fivax::mom::runtime::Output $text}
             proc ::MOM_output_literal {text args} {
                 ::fivax::mom::runtime::Output [::fivax::mom::runtime::Line $text]
             }
