@@ -24,7 +24,7 @@
 #	and names are "".
 
 namespace eval ::fivax::def {
-    namespace export parse load configure
+    namespace export parse load configure textAddress
     namespace ensemble create -prefixes 0
 }
 
@@ -106,6 +106,15 @@ proc ::fivax::def::configure {writer defDict} {
         lappend names $addr
     }
     return $names
+}
+
+# ::fivax::def::textAddress --
+#	Returns 1 when address addr of defDict writes text: its FORMAT is a
+#	string format (%s, as Post Builder's String), whose template words
+#	(Text[%]) are text with the post's variables in it, not expressions.
+proc ::fivax::def::textAddress {defDict addr} {
+    set code [dict get $defDict formats [dict get $defDict addresses $addr format]]
+    regexp {^%-?[0-9]*s$} $code
 }
 
 # ---------------------------------------------------------------------------

@@ -21,6 +21,17 @@
 #	  and mom_kin_helical_arc_output_mode;
 #	- lengths are converted from the CL's units to the post's
 #	  mom_kin_output_unit;
+#	- the globals NX sets on every event are set (NxGlobals, Move,
+#	  SetPosition, Arc: mom_prev_pos, mom_current_motion, the rapid rate in
+#	  mom_feed_rate, mom_pos_arc_*, the times), MOM_machine_mode fires
+#	  before the first operation, MOM_start_of_group / _end_of_group
+#	  around the program (one group, PROGRAM), as Post Builder posts
+#	  expect (their header and numbering start there);
+#	- MOM_do_template runs each .def block as one proc compiled in the
+#	  post interpreter (TemplateScript); every line passes the post's
+#	  MOM_before_output in mom_o_buffer; a sequence number past the .def's
+#	  maximum is NX's warning to MOM_catch_warning; MOM_open_output_file
+#	  and MOM_close_output_file open and close real files;
 #	- only the CL words below reach the post; any other record is a
 #	  warning with FILE:LINE.
 
@@ -68,7 +79,8 @@ namespace eval ::fivax::mom {
     variable dispatch {
         variable event
         global mom_prev_mcs_goto mom_prev_tool_axis mom_mcs_goto mom_tool_axis mom_pos \
-            mom_cl_line mom_motion_type mom_programmed_feed_rate mom_feed_rate mom_motion_event
+            mom_cl_line mom_motion_type mom_programmed_feed_rate mom_feed_rate mom_motion_event \
+            mom_prev_pos
         set saved $event
         try {
             foreach {op name value} $ops {
@@ -82,6 +94,7 @@ namespace eval ::fivax::mom {
                         lassign $value mom_mcs_goto(0) mom_mcs_goto(1) mom_mcs_goto(2) \
                             mom_tool_axis(0) mom_tool_axis(1) mom_tool_axis(2)
                         lassign $value mom_pos(0) mom_pos(1) mom_pos(2)
+                        lassign $name mom_prev_pos(0) mom_prev_pos(1) mom_prev_pos(2)
                     }
                     e {
                         set event $name
@@ -95,29 +108,61 @@ namespace eval ::fivax::mom {
         }
         set event $saved
     }
+    # The body of MOM_output_text {text args} and of the proc
+    # ::fivax::mom::runtime::Output {text args} in the post interpreter,
+    # where every line goes out (MOM_output_text, MOM_output_literal,
+    # MOM_do_template, whatever the post redefines): the line in mom_o_buffer
+    # through the post's MOM_before_output, as NX passes it (hook: the
+    # post has one; lines the handler writes itself skip it), then to
+    # the runtime (Write). Returns the line written.
+    variable output {
+        variable ::fivax::mom::runtime::hook
+        variable ::fivax::mom::runtime::busy
+        if {$hook && !$busy && $text ne ""} {
+            set busy 1
+            try {
+                set ::mom_o_buffer $text
+                ::MOM_before_output
+                set text $::mom_o_buffer
+            } finally {
+                set busy 0
+            }
+        }
+        ::fivax::mom::runtime::Write $text
+    }
+    # The body of the MOM_do_template the runtime defines in the post
+    # interpreter: the block template name's compiled proc (see
+    # TemplateScript).
+    variable doTemplate {
+        set proc ::fivax::mom::runtime::tpl::$name
+        if {[namespace which -command $proc] eq ""} {
+            return -code error -errorcode {FIVAX MOM TEMPLATE} \
+                "MOM_do_template: no block template '$name'"
+        }
+        $proc $mode
+    }
     # Waiting operations (elements of the ops list) past which a record
     # ends the batch: the runtime crosses into the post interpreter when
     # about this many are waiting (a plain GOTO makes 21).
     variable batch 4000
     # MOM_* commands with behaviour (implemented by Cmd<name> below).
     variable commands {
-        MOM_output_literal MOM_output_text MOM_do_template MOM_force
-        MOM_suppress MOM_set_seq_on MOM_set_seq_off MOM_reset_sequence
+        MOM_force MOM_suppress MOM_set_seq_on MOM_set_seq_off MOM_reset_sequence
         MOM_abort MOM_abort_event MOM_output_to_listing_device
         MOM_log_message MOM_reload_variable MOM_reload_kinematics
         MOM_update_kinematics MOM_ask_event_type MOM_ask_env_var
         MOM_ask_address_value MOM_set_address_format MOM_display_message
         MOM_validate_machine_model MOM_has_definition_element
+        MOM_open_output_file MOM_close_output_file MOM_remove_file
     }
     # MOM_* commands a Post Builder post may probe: harmless no-ops here.
     variable stubs {
         MOM_force_block MOM_disable_address MOM_enable_address MOM_incremental
         MOM_set_line_leader MOM_add_to_address_buffer MOM_add_to_block_buffer
-        MOM_add_to_line_buffer MOM_open_output_file MOM_close_output_file
-        MOM_load_definition_file MOM_set_env_var MOM_skip_handler_to_event
+        MOM_add_to_line_buffer MOM_load_definition_file MOM_set_env_var MOM_skip_handler_to_event
         MOM_set_debug_mode MOM_reload_iks_parameters MOM_load_kinematics
         MOM_cancel_suppress_force_once_per_event MOM_list_user_defined_events
-        MOM_load_oper_ude_exps MOM_remove_file MOM_run_user_function
+        MOM_load_oper_ude_exps MOM_run_user_function
         MOM_ask_oper_csys MOM_ask_syslog_name MOM_check_out_license
         MOM_convert_point MOM_abort_program MOM_do_template_file
         MOM_map_to_rotated_csys MOM_rotate_mach_csys MOM_ask_ess_exp_value
@@ -258,6 +303,109 @@ proc ::fivax::mom::CycleParams {rec scale} {
     list [dict get $cycleEvents $key] $p
 }
 
+# ::fivax::mom::TemplateScript --
+#	Returns the script that defines, in the post interpreter, one proc
+#	::fivax::mom::runtime::tpl::<name> {mode} per BLOCK_TEMPLATE of the
+#	.def dict defDict: it evaluates the leaders of the block's addresses
+#	and its words, compiled once with the proc (the .def is post code, as
+#	NX takes it; CL data reach it only as the values of variables), hands
+#	them to the runtime in one call (Block: TemplateBlock, with the
+#	leaders that changed) and writes the block (Output) unless mode is
+#	CREATE. A word
+#	of a String address is text with the post's variables in it (subst),
+#	any other an expression (expr); a \opt word that fails is left out,
+#	any other failure is {FIVAX MOM TEMPLATE} "MOM_do_template NAME:
+#	ADDRESS: message". The variables the texts name are the post's
+#	globals; a text with a command in it runs in the global frame.
+proc ::fivax::mom::TemplateScript {defDict} {
+    set script "namespace eval ::fivax::mom::runtime::tpl {}\n"
+    dict for {name words} [dict get $defDict blocks] {
+        set body [TemplateBody $defDict $name $words]
+        append script [list proc ::fivax::mom::runtime::tpl::$name {_fx_mode} $body] \n
+    }
+    return $script
+}
+
+# ::fivax::mom::TemplateBody -- Returns the body of block template name's proc (see TemplateScript).
+proc ::fivax::mom::TemplateBody {defDict name words} {
+    set vars {}
+    set code {}
+    set leaders 0
+    foreach word $words {
+        if {[dict exists $word literal]} {
+            # a literal word goes out as a forced address-less text
+            lappend code [list lappend _fx_w {} [dict get $word literal]]
+            continue
+        }
+        set addr [dict get $word address]
+        lappend code [list set _fx_a $addr]
+        set leader [dict get $defDict addresses $addr leader_expr]
+        if {$leader ne ""} {
+            # a leader goes to the runtime when it changed
+            lappend vars {*}[TemplateVars $leader]
+            set leaders 1
+            lappend code "set _fx_v \[[TemplateEval expr $leader]\]" \
+                "if {!\[[list info exists _fx_leader($addr)]\] || \$[list _fx_leader($addr)] ne \$_fx_v} {[list lappend _fx_l $addr] \$_fx_v}"
+        }
+        set text [dict get $word expr]
+        lappend vars {*}[TemplateVars $text]
+        set eval [TemplateEval [expr {[::fivax::def::textAddress $defDict $addr]
+            ? "subst" : "expr"}] $text]
+        if {[dict get $word opt]} {
+            lappend code "if {!\[[list catch $eval _fx_v]\]} {lappend _fx_w [list $addr] \$_fx_v}"
+        } else {
+            lappend code "lappend _fx_w [list $addr] \[$eval\]"
+        }
+    }
+    set vars [lsearch -all -inline -not -glob [lsort -unique $vars] _fx_*]
+    set head [list set _fx_w {}]\n[list set _fx_l {}]
+    if {[llength $vars]} {set head [list global {*}$vars]\n$head}
+    set tail {set _fx_line [::fivax::mom::runtime::Block $_fx_l $_fx_w]}
+    if {$leaders} {
+        set head "variable _fx_leader\n$head"
+        append tail \n {foreach {_fx_a _fx_v} $_fx_l {set _fx_leader($_fx_a) $_fx_v}}
+    }
+    append tail \n {if {$_fx_mode eq "CREATE"} {return $_fx_line}} \n \
+        {::fivax::mom::runtime::Output $_fx_line}
+    set fail "[list return -code error -errorcode {FIVAX MOM TEMPLATE}] \[[list format \
+        {MOM_do_template %s: %s: %s} $name] \$_fx_a \$_fx_msg\]"
+    return "$head\n[list try [join $code \n] on error _fx_msg $fail]\n$tail"
+}
+
+# ::fivax::mom::TemplateEval --
+#	Returns the command that evaluates .def text with how (expr or subst)
+#	in a template proc: compiled in the proc, or in the global frame
+#	(uplevel #0) when the text has a command in it.
+proc ::fivax::mom::TemplateEval {how text} {
+    if {[string first "\[" $text] >= 0} {return [list uplevel #0 [list $how $text]]}
+    list $how $text
+}
+
+# ::fivax::mom::TemplateVars -- Returns the names of the variables .def text reads as $name or ${name}.
+proc ::fivax::mom::TemplateVars {text} {
+    set names {}
+    foreach {- name} [regexp -all -inline {\$([A-Za-z0-9_]+)} $text] {lappend names $name}
+    foreach {- name} [regexp -all -inline {\$\{([^\}]*)\}} $text] {lappend names $name}
+    return $names
+}
+
+# ::fivax::mom::ArcFrame --
+#	Returns {axis sense plane} of an arc about axis turning by sense (1:
+#	counter-clockwise about it, -1 clockwise) as NX hands it to the post:
+#	in a principal plane (plane XY, YZ or ZX) about that plane's positive
+#	normal, the sense turned with it (a post writes G2 for CLW), else as
+#	it is (plane OTHER).
+proc ::fivax::mom::ArcFrame {axis sense} {
+    set u [::fivax::vec::unit $axis]
+    foreach c [list [lindex $u 2] [lindex $u 0] [lindex $u 1]] plane {XY YZ ZX} {
+        if {abs($c) > 1.0 - 1e-9} {
+            if {$c < 0} {return [list [::fivax::vec::scale -1.0 $axis] [expr {-$sense}] $plane]}
+            return [list $axis $sense $plane]
+        }
+    }
+    list $axis $sense OTHER
+}
+
 # ::fivax::mom::Where -- Returns FILE:LINE of record rec.
 proc ::fivax::mom::Where {rec} {
     return "[dict get $rec file]:[dict get $rec line]"
@@ -283,8 +431,12 @@ oo::class create ::fivax::mom::Runtime {
             point {} tool {} toolKey {} prevToolKey {} toolChanged 0 firstMove 1
             toolNames {} msysPending 0 unknown {} udes {}
             scale 1.0 clUnit MM outUnit MM unitsSeen 0 firstUnit MM nurbs {}
+            files {} machineTime 0.0 cuttingTime 0.0 fpm 0.0 moveLength 0.0
+            modeFired 0
         }
-        set S(nc) [::fivax::nc::create -sequence 0]
+        set my [namespace which my]
+        set S(nc) [::fivax::nc::create -sequence 0 -overflow [list $my SequenceOverflow] \
+            -warn [list $my Warn]]
         if {$S(def) ne ""} {
             set S(defDict) [::fivax::def::load $S(def)]
             ::fivax::def::configure $S(nc) $S(defDict)
@@ -295,32 +447,75 @@ oo::class create ::fivax::mom::Runtime {
         set child $S(interp)
         $child eval {namespace eval ::fivax::mom::runtime {variable event ""}}
         $child eval [list proc ::fivax::mom::runtime::Dispatch {ops} $::fivax::mom::dispatch]
+        $child eval {namespace eval ::fivax::mom::runtime {variable hook 0; variable busy 0}}
+        foreach proc {::fivax::mom::runtime::Output ::MOM_output_text} {
+            $child eval [list proc $proc {text args} $::fivax::mom::output]
+        }
+        $child eval {
+            proc ::MOM_output_literal {text args} {
+                ::fivax::mom::runtime::Output [::fivax::mom::runtime::Line $text]
+            }
+        }
+        foreach {cmd method} {Write Write Line Line Block TemplateBlock} {
+            $child alias ::fivax::mom::runtime::$cmd [namespace which my] $method
+        }
+        $child eval [list proc ::MOM_do_template {name {mode ""}} $::fivax::mom::doTemplate]
+        $child eval [::fivax::mom::TemplateScript $S(defDict)]
         if {[llength $S(autopath)]} {
             $child eval [list set ::auto_path $S(autopath)]
         }
         # The MOM_* commands call this object's Cmd_* methods.
-        set my [namespace which my]
         foreach cmd $::fivax::mom::commands {
             $child alias $cmd $my Cmd[string range $cmd 3 end]
         }
         foreach cmd $::fivax::mom::stubs {
             $child alias $cmd ::fivax::mom::Stub
         }
-        $child eval [list set ::mom_definition_file_name $S(def)]
-        $child eval [list set ::mom_event_handler_file_name $S(post)]
-        dict for {name value} $S(globals) {
+        dict for {name value} [dict merge [my NxGlobals] $S(globals)] {
             $child eval [list set ::$name $value]
         }
+        set S(outputs) [expr {$S(channel) eq "" ? {} : [list $S(channel)]}]
+        set S(mainFile) [expr {[dict exists $S(globals) mom_output_file_full_name]
+            ? [dict get $S(globals) mom_output_file_full_name] : ""}]
         if {$S(post) ne ""} {
             $child eval [list source $S(post)]
         }
         # NX converts the CL data to the post's output unit.
         set unit [string toupper [my PostVar mom_kin_output_unit MM]]
         set S(outUnit) [expr {$unit in {IN INCH INCHES} ? "IN" : "MM"}]
+        set S(rapidFeed) [my PostVar mom_kin_rapid_feed_rate \
+            [expr {$S(outUnit) eq "IN" ? 400.0 : 10000.0}]]
+        # (known now: Has would run waiting handlers from inside one)
+        $child eval [list set ::fivax::mom::runtime::hook [my Has MOM_before_output]]
+        my Has MOM_catch_warning
+    }
+
+    # NxGlobals --
+    #	Returns the globals NX sets before it sources the post (name/value
+    #	pairs): the post's files, the .def's SEQUENCE (mom_def_sequence_*),
+    #	and those a Post Builder post reads on any event without asking
+    #	whether they exist: the axes beyond three (0 on a three-axis
+    #	machine), the output mode, the spindle axis of cycles (Z), the
+    #	update flag of tool data, the times (minutes) and the warning text.
+    method NxGlobals {} {
+        set pairs [list mom_definition_file_name $S(def) mom_event_handler_file_name $S(post) \
+            mom_update_post_cmds_from_tool 0 mom_warning_info "" mom_output_mode ABSOLUTE \
+            mom_cycle_spindle_axis 2 mom_machine_time 0.0 mom_cutting_time 0.0 mom_seqnum 0 \
+            mom_pos(3) 0.0 mom_pos(4) 0.0 mom_prev_pos(3) 0.0 mom_prev_pos(4) 0.0]
+        set seq [expr {[dict exists $S(defDict) sequence] ? [dict get $S(defDict) sequence] : {}}]
+        if {[llength $seq]} {
+            foreach {key name} {start start incr increment freq frequency max maximum} {
+                lappend pairs mom_def_sequence_$name [dict get $seq $key]
+            }
+        }
+        return $pairs
     }
 
     destructor {
         if {[info exists S(interp)] && [interp exists $S(interp)]} {interp delete $S(interp)}
+        if {[info exists S(files)]} {
+            dict for {path chan} $S(files) {close $chan}
+        }
         if {[info exists S(nc)]} {$S(nc) destroy}
     }
 
@@ -393,7 +588,9 @@ oo::class create ::fivax::mom::Runtime {
         }
     }
 
-    # Start -- Sets program-level globals and fires MOM_start_of_program.
+    # Start --
+    #	Sets program-level globals and fires MOM_start_of_program, then
+    #	MOM_start_of_group of the one program group (PROGRAM).
     method Start {path} {
         if {$path eq "-"} {
             set name PART
@@ -406,13 +603,16 @@ oo::class create ::fivax::mom::Runtime {
             mom_cl_file $path]
         my SetUnit $S(firstUnit)
         my Fire start_of_program
+        my Globals {mom_group_name PROGRAM}
+        my Fire start_of_group
     }
 
-    # Finish -- Closes an open path and fires MOM_end_of_program.
+    # Finish -- Closes an open path and fires MOM_end_of_group and MOM_end_of_program.
     method Finish {} {
         if {[llength $S(nurbs)]} {my Nurbs}
         my FlushHeader
         if {$S(pathOpen)} {my EndPath}
+        my Fire end_of_group
         my Fire end_of_program
         my UnknownTotals
     }
@@ -636,8 +836,11 @@ oo::class create ::fivax::mom::Runtime {
     }
 
     # FlushHeader --
-    #	Fires MOM_start_of_path with the gathered header (tool, spindle and
-    #	coolant globals set), MOM_msys, the tool event when the tool differs
+    #	Fires MOM_machine_mode before the first operation (NX fires it when
+    #	the mode changes: replay's operations are all MILL), then
+    #	MOM_start_of_path with the gathered header (tool, spindle and
+    #	coolant globals set; tool and spindle globals the CL never gave at
+    #	NX's defaults: 0, CLW, RPM), MOM_msys, the tool event when the tool differs
     #	from the previous operation's, then the gathered control events.
     method FlushHeader {} {
         if {!$S(headerPending)} return
@@ -657,10 +860,16 @@ oo::class create ::fivax::mom::Runtime {
                 mom_tool_length_adjust_register $n]
         }
         foreach {var default} {mom_tool_length 0.0 mom_tool_diameter 0.0
-            mom_tool_corner1_radius 0.0 mom_tool_name ""} {
+            mom_tool_corner1_radius 0.0 mom_tool_name "" mom_spindle_speed 0.0
+            mom_spindle_direction CLW mom_spindle_mode RPM} {
             if {![my Child [list info exists ::$var]]} {
                 my Globals [list $var $default]
             }
+        }
+        if {!$S(modeFired)} {
+            # the mode of every operation replay posts (MILL) is set at the start
+            set S(modeFired) 1
+            my Fire machine_mode
         }
         my Fire start_of_path
         if {$S(msysPending)} {
@@ -722,8 +931,10 @@ oo::class create ::fivax::mom::Runtime {
             mom_feed_cut_value $value]
         if {$mode in {MMPR IPR}} {
             set rpm [my Child {expr {[info exists ::mom_spindle_speed] ? $::mom_spindle_speed : 0.0}}]
-            my Globals [list mom_feed_rate_per_rev $value mom_feed_rate [expr {$value * $rpm}]]
+            set S(fpm) [expr {$value * $rpm}]
+            my Globals [list mom_feed_rate_per_rev $value mom_feed_rate $S(fpm)]
         } else {
+            set S(fpm) $value
             my Globals [list mom_feed_rate $value]
         }
         set S(feed) $value
@@ -748,7 +959,8 @@ oo::class create ::fivax::mom::Runtime {
         }
         if {$S(rapid)} {
             set S(rapid) 0
-            my Globals [list mom_motion_type RAPID mom_programmed_feed_rate 0]
+            my Globals [list mom_motion_type RAPID mom_programmed_feed_rate 0 \
+                mom_feed_rate $S(rapidFeed)]
             my SetPosition $point $S(axis)
             my Move rapid_move
         } elseif {[llength $S(circle)]} {
@@ -782,6 +994,9 @@ oo::class create ::fivax::mom::Runtime {
     #	MOM_$mom_motion_event, their MOM_initial_move MOM_rapid_move or
     #	MOM_linear_move by mom_programmed_feed_rate; were the motion's own
     #	event fired after either, they would write every first move twice).
+    #	mom_machine_time and mom_cutting_time (minutes) grow by the move's
+    #	length (see SetPosition) at its feed per minute, a rapid's at
+    #	mom_kin_rapid_feed_rate (machine time only).
     #	(The operations of a motion are the same each time, Has answering
     #	once per name: MoveOps makes them at the first, S(move:...) keeps
     #	them with the number of handlers among them.)
@@ -794,32 +1009,43 @@ oo::class create ::fivax::mom::Runtime {
         set key move:$event,$final
         if {![info exists S($key)]} {set S($key) [my MoveOps $event $final]}
         lassign $S($key) ops handlers
-        lappend S(ops) {*}$ops
+        set feed [expr {$event eq "rapid_move" ? $S(rapidFeed) : $S(fpm)}]
+        if {$feed > 0} {
+            set t [expr {$S(moveLength) / $feed}]
+            set S(machineTime) [expr {$S(machineTime) + $t}]
+            if {$event ne "rapid_move"} {set S(cuttingTime) [expr {$S(cuttingTime) + $t}]}
+        }
+        lappend S(ops) v ::mom_machine_time $S(machineTime) v ::mom_cutting_time $S(cuttingTime) \
+            {*}$ops
         incr S(events) $handlers
         set S(ready) [llength $S(ops)]
     }
 
     # MoveOps --
     #	Returns the operations of a motion (see Move) whose event is event
-    #	and whose handler is MOM_<final>, and the number of handlers among
-    #	them.
+    #	and whose handler is MOM_<final> (also in mom_current_motion), and
+    #	the number of handlers among them.
     method MoveOps {event final} {
         set before [my Fires before_motion]
         set handler [my Fires $final]
-        set ops [list v mom_motion_event $event {*}$before {*}$handler]
+        set ops [list v mom_motion_event $event v ::mom_current_motion $final {*}$before {*}$handler]
         list $ops [expr {([llength $before] + [llength $handler]) / 3}]
     }
 
     # SetPosition --
     #	Sets mom_mcs_goto, mom_tool_axis (3-vectors) and their mom_prev_*
     #	copies (the last position is kept for them: S(position), the point
-    #	and axis in one list). mom_pos mirrors mom_mcs_goto: the replay
-    #	runtime does no kinematics.
+    #	and axis in one list), and the move's length (S(moveLength), for
+    #	the times). mom_pos and mom_prev_pos (0-2) mirror mom_mcs_goto and
+    #	mom_prev_mcs_goto: the replay runtime does no kinematics.
     method SetPosition {point axis} {
         # (list: concat makes the strings of the axis's numbers)
         set position [list {*}$point {*}$axis]
         # (llength: eq would make the previous point's string for nothing)
         if {![llength $S(point)]} {set S(position) $position}
+        lassign $S(position) x0 y0 z0
+        lassign $point x y z
+        set S(moveLength) [expr {sqrt(($x - $x0) ** 2 + ($y - $y0) ** 2 + ($z - $z0) ** 2)}]
         lappend S(ops) p $S(position) $position
         set S(point) $point
         set S(position) $position
@@ -835,7 +1061,9 @@ oo::class create ::fivax::mom::Runtime {
     #	mom_arc_direction is the turning sense about mom_arc_axis: NX-style
     #	CIRCLEs (11 numbers: NX, Makino) turn clockwise about their vector,
     #	the short APT form (6 or 7 numbers: Creo, SolidWorks CAM)
-    #	counter-clockwise (nx-conventions.md 5.4). An arc with no position
+    #	counter-clockwise (nx-conventions.md 5.4); an arc in a principal
+    #	plane is about that plane's positive normal (see ArcFrame), with
+    #	mom_pos_arc_center, _axis and _plane. An arc with no position
     #	before it has no start: its end is reached by a linear move, with
     #	a warning (a post would take an arc from its end to its end for a
     #	full circle).
@@ -873,15 +1101,19 @@ oo::class create ::fivax::mom::Runtime {
         set max [dict get {FULL_CIRCLE 360.0 QUADRANT 90.0 END_POINT Inf} $mode]
         set pieces [my Curve $circle ARC CIRCLE arcSplit $start $end $center $axis $sense $times \
             [expr {$max * $pi / 180.0}]]
+        lassign [::fivax::mom::ArcFrame $axis $sense] nxAxis nxSense plane
         set pairs [list mom_arc_radius [dict get $circle radius] \
-            mom_arc_direction [expr {$sense < 0 ? "CLW" : "CCLW"}]]
+            mom_arc_direction [expr {$nxSense < 0 ? "CLW" : "CCLW"}]]
         foreach key {tolerance intol tool_diameter tool_radius} {
             if {[dict exists $circle $key]} {
                 lappend pairs mom_arc_[string map {intol intol_fraction} $key] [dict get $circle $key]
             }
         }
         my Array mom_arc_center $center
-        my Array mom_arc_axis $axis
+        my Array mom_arc_axis $nxAxis
+        my Array mom_pos_arc_center $center
+        my Array mom_pos_arc_axis $nxAxis
+        my Globals [list mom_pos_arc_plane $plane]
         set event [expr {$helix && [my Has MOM_helix_move] ? "helix_move" : "circular_move"}]
         set from $start
         foreach piece $pieces {
@@ -890,8 +1122,10 @@ oo::class create ::fivax::mom::Runtime {
             my Globals [concat $pairs [list mom_arc_times 0 \
                 mom_arc_angle [::fivax::num::deg $sweep] \
                 mom_helix_pitch [my Pitch $from $p $axis $sweep]]]
+            set length [my ArcLength $from $p $center $axis $sweep]
             set from $p
             my SetPosition $p $S(axis)
+            set S(moveLength) $length
             my Move $event
         }
     }
@@ -991,6 +1225,13 @@ oo::class create ::fivax::mom::Runtime {
         }
     }
 
+    # ArcLength -- Returns the length of the arc piece from a to b about center and axis sweeping sweep (rad).
+    method ArcLength {a b center axis sweep} {
+        set r [::fivax::curve::radius $a $center $axis]
+        set rise [::fivax::vec::dot [::fivax::vec::sub $b $a] [::fivax::vec::unit $axis]]
+        expr {hypot($r * $sweep, $rise)}
+    }
+
     # Pitch -- Returns the axial rise per turn of the arc piece from a to b sweeping sweep (rad).
     method Pitch {a b axis sweep} {
         namespace upvar ::fivax::num pi pi
@@ -1030,7 +1271,7 @@ oo::class create ::fivax::mom::Runtime {
         } else {
             my SetPosition [dict get $rec point] $S(axis)
             my Globals [list mom_motion_type GOHOME mom_motion_event gohome_move \
-                mom_programmed_feed_rate 0]
+                mom_programmed_feed_rate 0 mom_feed_rate $S(rapidFeed)]
             my Fire before_motion 0
             my Fire gohome_move
         }
@@ -1092,12 +1333,15 @@ oo::class create ::fivax::mom::Runtime {
         my SetUnit [expr {[dict get $rec value] eq "INCH" ? "IN" : "MM"}]
     }
 
-    # SetUnit -- Sets the CL's unit (MM or IN): mom_part_unit and the scale to the output unit.
+    # SetUnit --
+    #	Sets the CL's unit (MM or IN): mom_part_unit, the scale to the
+    #	output unit, and mom_feed_rate_output_mode (IPM or MMPM) of it.
     method SetUnit {unit} {
         namespace upvar ::fivax::mom unitLength unitLength
         set S(clUnit) $unit
         set S(scale) [expr {[dict get $unitLength $unit] / [dict get $unitLength $S(outUnit)]}]
-        my Globals [list mom_part_unit $unit mom_output_unit $S(outUnit)]
+        my Globals [list mom_part_unit $unit mom_output_unit $S(outUnit) \
+            mom_feed_rate_output_mode [expr {$S(outUnit) eq "IN" ? "IPM" : "MMPM"}]]
     }
 
     # Scale --
@@ -1192,70 +1436,91 @@ oo::class create ::fivax::mom::Runtime {
         }
     }
 
-    # MOM_output_text: one literal line, never numbered, to the output
-    # channel (an empty one is not written); every line goes out here.
-    method Cmd_output_text {text args} {
+    # Write --
+    #	The end of every output line (see the output variable): text, when
+    #	not empty, to the output channel and the files the post opened;
+    #	returns it.
+    method Write {text} {
         if {$text ne ""} {
             incr S(blocks)
-            if {$S(channel) ne ""} {puts $S(channel) $text}
+            foreach chan $S(outputs) {puts $chan $text}
         }
         return $text
     }
 
-    # MOM_output_literal: one literal line, numbered when sequencing is on.
-    method Cmd_output_literal {text args} {
-        my Cmd_output_text [$S(nc) line $text]
+    # Line -- Returns text as one block of MOM_output_literal, numbered when sequencing is on.
+    method Line {text} {
+        $S(nc) line $text
     }
 
-    # MOM_do_template: formats a .def block template with the post's globals.
-    method Cmd_do_template {name {mode ""}} {
-        if {![dict exists $S(defDict) blocks $name]} {
-            ::fivax::Fail MOM TEMPLATE "MOM_do_template: no block template '$name'"
+    # MOM_open_output_file path: every line from here on also goes to the
+    # file path (created anew), until MOM_close_output_file; the output
+    # file NX named (mom_output_file_full_name) reopens as it was.
+    method Cmd_open_output_file {path args} {
+        if {[my IsMainFile $path]} {
+            if {$S(channel) ni $S(outputs)} {set S(outputs) [linsert $S(outputs) 0 $S(channel)]}
+        } elseif {![dict exists $S(files) $path]} {
+            set chan [open $path w]
+            chan configure $chan -translation lf
+            dict set S(files) $path $chan
+            lappend S(outputs) $chan
         }
-        set words {}
-        foreach word [dict get $S(defDict) blocks $name] {
-            if {[dict exists $word literal]} {
-                # A literal word goes out as a forced address-less text.
-                lappend words {} [dict get $word literal]
-                continue
-            }
-            set addr [dict get $word address]
-            my Leader $addr
-            if {[dict exists $word expr] && [dict get $word expr] ne ""} {
-                # Template text is post code (the .def), evaluated with expr
-                # rules in the post interpreter as NX does; never CL data.
-                try {
-                    set value [my GlobalExpr [dict get $word expr]]
-                } on error {msg} {
-                    if {[dict exists $word opt] && [dict get $word opt]} continue
-                    ::fivax::Fail MOM TEMPLATE "MOM_do_template $name: $addr: $msg"
-                }
-            } else {
-                set value ""
-            }
-            lappend words $addr $value
+        return ""
+    }
+
+    # MOM_close_output_file path: no more lines to the file path (the
+    # output file NX named included: the post may reopen it).
+    method Cmd_close_output_file {path args} {
+        if {[my IsMainFile $path]} {
+            set chan $S(channel)
+        } elseif {[dict exists $S(files) $path]} {
+            set chan [dict get $S(files) $path]
+            dict unset S(files) $path
+            close $chan
+        } else {
+            return ""
         }
-        set line [$S(nc) block $words]
-        if {$mode ne "CREATE"} {my Cmd_output_text $line}
-        return $line
+        set S(outputs) [lsearch -all -inline -exact -not $S(outputs) $chan]
+        return ""
     }
 
-    # GlobalExpr --
-    #	Evaluates a .def expression (post code, never CL data) with expr rules
-    #	in the post interpreter's global namespace, as NX does, even while a
-    #	handler is running.
-    method GlobalExpr {text} {
-        $S(interp) eval [list namespace eval :: [list expr $text]]
+    # MOM_remove_file path: removes the file (Post Builder's base file
+    # removes an earlier run's output before it reopens the output file).
+    method Cmd_remove_file {path args} {
+        file delete -- $path
+        return ""
     }
 
-    # Leader --
-    #	Sets the leader of address addr from its .def LEADER expression (post
-    #	code such as [$mom_sys_leader(X)]), evaluated in the post interpreter.
-    method Leader {addr} {
-        if {![dict exists $S(defDict) addresses $addr leader_expr]} return
-        set text [dict get $S(defDict) addresses $addr leader_expr]
-        if {$text eq ""} return
-        $S(nc) address $addr -leader [my GlobalExpr $text]
+    # IsMainFile -- Returns 1 when path names the output file NX named to the post.
+    method IsMainFile {path} {
+        expr {$S(mainFile) ne "" && $S(channel) ne ""
+            && [file normalize $path] eq [file normalize $S(mainFile)]}
+    }
+
+    # SequenceOverflow --
+    #	The next sequence number n passed the .def's maximum: NX's warning
+    #	(mom_warning_info names mom_seqnum) goes to the post's
+    #	MOM_catch_warning, which may restart the numbering (Post Builder's
+    #	base file does); else numbering stops with the runtime's warning.
+    method SequenceOverflow {n} {
+        if {![my Has MOM_catch_warning]} return
+        set max [dict get $S(defDict) sequence max]
+        $S(interp) eval [list set ::mom_seqnum $n]
+        $S(interp) eval [list set ::mom_warning_info "mom_seqnum $n exceeds the maximum $max\
+            of the .def's SEQUENCE"]
+        $S(interp) eval ::MOM_catch_warning
+    }
+
+    # TemplateBlock --
+    #	The block of MOM_do_template (see ::fivax::mom::TemplateScript):
+    #	sets the leaders that changed (flat address/text list leaders) and
+    #	returns the words (flat address/value list, "" for a literal)
+    #	formatted as a block.
+    method TemplateBlock {leaders words} {
+        foreach {addr text} $leaders {
+            $S(nc) address $addr -leader $text
+        }
+        $S(nc) block $words
     }
 
     # MOM_force Always|Once|Off addr...
@@ -1329,9 +1594,20 @@ oo::class create ::fivax::mom::Runtime {
         $S(interp) eval {set ::fivax::mom::runtime::event}
     }
 
-    # MOM_ask_env_var name: value of an environment variable, or "".
+    # MOM_ask_env_var name: value of an environment variable, or "";
+    # unset, NX's own: UGII_CAM_POST_DIR is the post's directory (with its
+    # separator: posts source ${UGII_CAM_POST_DIR}ugpost_base.tcl beside
+    # them), UGII_TMP_DIR the temporary directory (TMPDIR, else /tmp).
     method Cmd_ask_env_var {name} {
         if {[info exists ::env($name)]} {return $::env($name)}
+        switch -- $name {
+            UGII_CAM_POST_DIR {
+                if {$S(post) ne ""} {return [file dirname [file normalize $S(post)]]/}
+            }
+            UGII_TMP_DIR {
+                return [expr {[info exists ::env(TMPDIR)] ? $::env(TMPDIR) : "/tmp"}]
+            }
+        }
         return ""
     }
 

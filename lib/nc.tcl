@@ -50,6 +50,7 @@ namespace eval ::fivax::nc {
         {-separator text " " TEXT "text between words"}
         {-eol any "" TEXT "text at the end of every block"}
         {-warn any "" CMD "command prefix called with the message of a MIN/MAX Warning, or when numbering stops"}
+        {-overflow any "" CMD "command prefix called with the next sequence number when it passes -seq-max: numbering goes on when it restarts the sequence"}
     }
 }
 
@@ -64,7 +65,9 @@ proc ::fivax::nc::create {args} {
 
 oo::class create ::fivax::nc::Writer {
     # Addr($name) (see the file header), Mem($name) (the modal memory:
-    # {text value} of the last word written); the rest in S (few declared
+    # {text value} of the last word written, {text value 1} when the
+    # value was within the limits and the format has not changed since:
+    # the same value writes the same text); the rest in S (few declared
     # variables: TclOO resolves every local of a method against each
     # declared name on every call): S(cfg) the option dict, S(names) the
     # address names in definition order; S(sep), S(eol), S(seqOn),
@@ -114,6 +117,8 @@ oo::class create ::fivax::nc::Writer {
         }
         if {[info exists Addr($name)]} {
             lassign $Addr($name) mode kind spec leader trailer - - limits fmt base fa sa once
+            # (its format or limits may change: the last value is no longer known to format as then)
+            set Mem($name) [lrange $Mem($name) 0 1]
         } else {
             if {$name eq "" || [regexp {[\s,]} $name]} {
                 ::fivax::Fail NC ADDRESS "bad address name \"$name\""
@@ -188,8 +193,9 @@ oo::class create ::fivax::nc::Writer {
     # word: a block that fails changes none of it. The empty name ""
     # stands for literal text, written as it is every time.
     # Numbering: N<seq> first while numbering is on and the number within
-    # -seq-max (then the number advances); past -seq-max numbering stops
-    # with one warning: never a repeated N.
+    # -seq-max (then the number advances); past -seq-max the -overflow
+    # command may restart it, else numbering stops with one warning:
+    # never a number past -seq-max.
     # Errors: {FIVAX NC ADDRESS} for an undefined address name.
     method block {words {numbered 1} {around {}}} {
         set out ""
@@ -203,7 +209,14 @@ oo::class create ::fivax::nc::Writer {
                 switch -- $mode {
                     s continue
                     S {lappend once $name; continue}
+                    m {
+                        # the value last written, within the limits, formats
+                        # as then: a modal word left out unformatted
+                        lassign $Mem($name) - last within
+                        if {$within ne "" && $last eq $v} continue
+                    }
                 }
+                set within 1
                 # Number in, decimal: Tcl reads "017" as octal, so integers and
                 # strings go through scan; plain doubles are used as they are
                 # (x is v itself, or what scan read: a second conversion, the
@@ -219,6 +232,7 @@ oo::class create ::fivax::nc::Writer {
                         || [scan $v %lf%c x x] == 1} {
                     if {!($x >= $lo && $x <= $hi)} {
                         # beyond a MIN/MAX, or not finite
+                        set within 0
                         set x [my Bound $name $x]
                         if {!($x > -Inf && $x < Inf)} {
                             ::fivax::Fail NC VALUE "address $name: value is not finite: $v"
@@ -252,7 +266,7 @@ oo::class create ::fivax::nc::Writer {
                 append out $sep$leader$t$trailer
                 set sep $S(sep)
                 lappend upd $name
-                lappend upd [list $t $v]
+                lappend upd [expr {$within ? [list $t $v 1] : [list $t $v]}]
             }
         } trap {TCL READ VARNAME} {msg opts} {
             if {[info exists Addr($name)]} {return -options $opts $msg}
@@ -263,8 +277,7 @@ oo::class create ::fivax::nc::Writer {
         if {![llength $upd]} {return ""}
         if {[llength $around]} {set out [lindex $around 0]$out[lindex $around 1]}
         if {!$numbered || !$S(seqOn)} {return $out$S(eol)}
-        if {$S(seqNext) > $S(seqMax)} {
-            my StopNumbering
+        if {$S(seqNext) > $S(seqMax) && ![my Overflow]} {
             return $out$S(eol)
         }
         lassign $Addr(N) mode kind spec leader trailer
@@ -273,6 +286,8 @@ oo::class create ::fivax::nc::Writer {
             set t $S(seqNext)
         } elseif {$kind eq "d"} {
             set t [::format $spec $S(seqNext)]
+        } elseif {$kind eq "a"} {
+            set t [::fivax::nc::Amp $spec $S(seqNext)]
         } else {
             set t [::fivax::nc::format [lindex $Addr(N) 8] $S(seqNext)]
         }
@@ -394,6 +409,18 @@ oo::class create ::fivax::nc::Writer {
                 -seq-max {set S(seqMax) $v}
             }
         }
+    }
+
+    # Overflow --
+    #	The next number passed -seq-max: returns 1 when the -overflow
+    #	command restarted the numbering within it, else stops numbering
+    #	(with a warning) and returns 0.
+    method Overflow {} {
+        set cmd [dict get $S(cfg) -overflow]
+        if {[llength $cmd]} {{*}$cmd $S(seqNext)}
+        if {$S(seqOn) && $S(seqNext) <= $S(seqMax)} {return 1}
+        my StopNumbering
+        return 0
     }
 
     # Stops numbering past -seq-max, with a warning.

@@ -20,6 +20,10 @@
 #	             can reach with the post's work and no post structure
 #	  minimal    the minimal loop (::bench::Loop): scan, kin orientations
 #	             and position (first solution), format, write
+#	  stock-style post   tools/replay.tcl -post tests/data/pbstyle/pbstyle.tcl:
+#	             a Post Builder-shaped three-axis post (MOM_do_template
+#	             with a .def, MOM_before_output) on the same runtime and
+#	             file, beside "one process" (fivax's own post)
 #	The file is a zig-zag raster over the example surface
 #	(tools/lib/toolpath.tcl), 1000 points a pass, at most 200 passes
 #	(generated once), repeated to the size. Nothing is asserted: the
@@ -390,6 +394,7 @@ proc ::bench::main {argv} {
     set tclsh [info nameofexecutable]
     set replay [file join $root tools replay.tcl]
     set bench [file join $root tools bench.tcl]
+    set stock [file join $root tests data pbstyle pbstyle.tcl]
     try {
         set t0 [clock milliseconds]
         set files [Generate $sizes $dir]
@@ -406,7 +411,8 @@ proc ::bench::main {argv} {
                 "-tol 0, no check" [list $tclsh $bench -nocheck -machine $machineFile -tol 0 \
                     -check-process off -o $out $cl] \
                 "fused floor" [list $tclsh $bench -fused $machineFile $cl $out] \
-                minimal [list $tclsh $bench -loop $machineFile $cl $out]]
+                minimal [list $tclsh $bench -loop $machineFile $cl $out] \
+                "stock-style post" [list $tclsh $replay -post $stock -o $out $cl]]
             set rates {}
             foreach {label words} $rows {
                 lassign [Run $words] wall mb err
@@ -416,13 +422,14 @@ proc ::bench::main {argv} {
                 puts [format "%-9d %-18s %9d %12.0f %9.2f %8s" $n $label $records $rate $wall [Mb $mb]]
                 file delete $out [file rootname $out].log
             }
-            lassign $rates replayRate oneRate nocheckRate floorRate minimalRate
+            lassign $rates replayRate oneRate nocheckRate floorRate minimalRate stockRate
             puts [format "%-9s %-18s %.1f (%.1f in one process)" "" "floor / replay" \
                 [expr {$floorRate / $replayRate}] [expr {$floorRate / $oneRate}]]
             puts [format "%-9s %-18s %s" "" "minimal / replay" \
                 [format "%.1f (%.1f in one process, %.1f without linearisation and check)" \
                     [expr {$minimalRate / $replayRate}] [expr {$minimalRate / $oneRate}] \
                     [expr {$minimalRate / $nocheckRate}]]]
+            puts [format "%-9s %-18s %.2f" "" "stock / one proc." [expr {$stockRate / $oneRate}]]
         }
     } finally {
         file delete -force $dir

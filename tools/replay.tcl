@@ -587,9 +587,11 @@ proc ::replay::Runtime {postFile defFile given args} {
 # ::replay::PostSettings --
 #	Returns the settings the post postFile (.def defFile) posts with, the
 #	settings given on top (see Runtime), as the post assembles them when
-#	it loads; dies with the post's message when it stops loading, or when
-#	it is no fivax post. (The post loads without the -log given: a post
-#	that stops loading writes its log, and that file is not checked yet.)
+#	it loads; {} for a post that is no fivax post (an NX post such as
+#	Post Builder makes: it runs as it is, and takes none of the settings:
+#	dies when some are given); dies with the post's message when it stops
+#	loading. (The post loads without the -log given: a post that stops
+#	loading writes its log, and that file is not checked yet.)
 proc ::replay::PostSettings {postFile defFile given} {
     try {
         set rt [Runtime $postFile $defFile [dict remove $given -log]]
@@ -601,7 +603,11 @@ proc ::replay::PostSettings {postFile defFile given} {
     try {
         set child [$rt interp]
         if {![$child eval {info exists ::fivax(settings)}]} {
-            Die "replay: -post $postFile: no fivax post (it sets no fivax(settings))"
+            if {[dict size $given]} {
+                Die "replay: -post $postFile: [join [dict keys $given] {, }]: settings of fivax\
+                    posts, and this post is none (it sets no fivax(settings))"
+            }
+            return {}
         }
         set settings [$child eval {set ::fivax(settings)}]
         dict merge $settings [dict filter $given key -log]
@@ -627,7 +633,7 @@ proc ::replay::Post {postFile defFile given clsf chan out process progress} {
     set globals {}
     if {$out ne ""} {
         dict set globals mom_output_file_full_name $out
-        dict set globals mom_output_file_directory [file dirname $out]
+        dict set globals mom_output_file_directory [file dirname $out]/
         dict set globals mom_output_file_basename [file rootname [file tail $out]]
         dict set globals mom_output_file_suffix [string trimleft [file extension $out] .]
     }
@@ -752,28 +758,35 @@ proc ::replay::main {argv} {
     CheckInput $clsf
     CheckMachineFile $given
     set settings [PostSettings $postFile $defFile $given]
-    set machineFile [dict get $settings -machine]
+    # an NX post of its own (no fivax settings): no machine file, no log, no dry run
+    set fivax [expr {[dict size $settings] > 0}]
+    set machineFile [expr {$fivax ? [dict get $settings -machine] : ""}]
     set target ""
     if {[dict get $opts -o] ni {"" -}} {
         set target [CheckTarget -o [dict get $opts -o] $clsf $machineFile]
         # from here on a failed run removes the program of an earlier one
         if {[lindex $target 0] eq "file"} {set R(stale) [list [lindex $target 1]]}
     }
-    set machine [CheckMachine $settings $defFile]
-    if {[dict get $settings -log] ne ""} {
-        CheckTarget -log [dict get $settings -log] $clsf $machineFile
+    if {$fivax} {
+        set machine [CheckMachine $settings $defFile]
+        if {[dict get $settings -log] ne ""} {
+            CheckTarget -log [dict get $settings -log] $clsf $machineFile
+        }
+        Say "fivax: posting for machine [file normalize $machineFile]"
+    } else {
+        set machine {}
+        Say "fivax: posting with the NX post $postFile"
     }
-    Say "fivax: posting for machine [file normalize $machineFile]"
     set progress [expr {![dict get $opts -quiet] && [Terminal stderr]}]
     if {$progress} {::fivax::clsf::progress ::replay::Tick}
-    set R(dryrun) [expr {[dict get $settings -dryrun] eq "on"}]
+    set R(dryrun) [expr {$fivax && [dict get $settings -dryrun] eq "on"}]
     set R(start) [clock milliseconds]
     set R(last) $R(start)
     if {$clsf ne "-" && [file isfile $clsf]} {set R(size) [file size $clsf]}
     # the post's log beside a file target: a temporary name, kept only when
     # the run succeeds
     set log ""
-    if {[lindex $target 0] eq "file" && [dict get $settings -log] eq ""} {
+    if {$fivax && [lindex $target 0] eq "file" && [dict get $settings -log] eq ""} {
         set log [LogFile [lindex $target 1] $clsf $machineFile]
         if {$log ne ""} {lappend R(stale) $log}
     }
@@ -785,7 +798,8 @@ proc ::replay::main {argv} {
         -buffersize $bufferSize
     try {
         set stats [Post $postFile $defFile $given $clsf $R(sink) $out \
-            [CheckProcess [dict get $opts -check-process] $clsf] $progress]
+            [expr {$fivax && [CheckProcess [dict get $opts -check-process] $clsf]}] \
+            [expr {$fivax && $progress}]]
         if {[dict exists $stats limitViolations] && [dict get $stats limitViolations] > 0} {
             # A safety net: the checker refuses such a value when it is written.
             error "[dict get $stats limitViolations] values outside the machine's limits; no NC file written"
