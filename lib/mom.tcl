@@ -70,7 +70,9 @@ namespace eval ::fivax::mom {
     # motion), a sets the global array name from the pairs value, p sets a
     # position (see Runtime SetPosition: name is the previous {x y z i j
     # k}, value the current one), e fires MOM_name (MOM_abort_event leaves
-    # the handler quietly). The event being fired is the variable event of
+    # the handler quietly) as NX calls it: at level #0, by its bare name
+    # (Post Builder's CALLED_BY matches [info level -2] against
+    # "MOM_linear_move*"). The event being fired is the variable event of
     # that namespace (for MOM_ask_event_type).
     # (The globals of every motion are linked by global once per batch, so
     # that set and lassign find local names; an error puts the event back
@@ -98,7 +100,7 @@ namespace eval ::fivax::mom {
                     }
                     e {
                         set event $name
-                        try {::MOM_$name} trap {FIVAX MOM ABORT_EVENT} {} {}
+                        try {uplevel #0 [list MOM_$name]} trap {FIVAX MOM ABORT_EVENT} {} {}
                     }
                 }
             }
@@ -861,7 +863,8 @@ oo::class create ::fivax::mom::Runtime {
         }
         foreach {var default} {mom_tool_length 0.0 mom_tool_diameter 0.0
             mom_tool_corner1_radius 0.0 mom_tool_name "" mom_spindle_speed 0.0
-            mom_spindle_direction CLW mom_spindle_mode RPM} {
+            mom_spindle_direction CLW mom_spindle_mode RPM mom_fixture_offset_value 0
+            mom_stock_part 0.0 mom_stock_floor 0.0} {
             if {![my Child [list info exists ::$var]]} {
                 my Globals [list $var $default]
             }
@@ -1305,12 +1308,22 @@ oo::class create ::fivax::mom::Runtime {
         my Event [expr {$mode eq "OFF" ? "coolant_off" : "coolant_on"}]
     }
 
-    # Cutcom -- CUTCOM: fires MOM_cutcom_on or MOM_cutcom_off.
+    # Cutcom --
+    #	CUTCOM: fires MOM_cutcom_on or MOM_cutcom_off. The plane is
+    #	mom_cutcom_plane XY, YZ or ZX (as NX gives it: Post Builder posts
+    #	index mom_sys_cutcom_plane_code by it), the register
+    #	mom_cutcom_register; a record without them leaves both as they were.
     method Cutcom {rec} {
         my EnsurePath
         set mode [dict get $rec mode]
-        my Globals [list mom_cutcom_mode $mode mom_cutcom_status [expr {$mode eq "OFF" ? "OFF" : "ON"}] \
-            mom_cutcom_plane [dict get $rec plane] mom_cutcom_register [dict get $rec register]]
+        set pairs [list mom_cutcom_mode $mode mom_cutcom_status [expr {$mode eq "OFF" ? "OFF" : "ON"}]]
+        if {[dict get $rec plane] ne ""} {
+            lappend pairs mom_cutcom_plane [string range [dict get $rec plane] 0 1]
+        }
+        if {[dict get $rec register] ne ""} {
+            lappend pairs mom_cutcom_register [dict get $rec register]
+        }
+        my Globals $pairs
         my Fire [expr {$mode eq "OFF" ? "cutcom_off" : "cutcom_on"}]
     }
 
@@ -1589,9 +1602,12 @@ oo::class create ::fivax::mom::Runtime {
         return ""
     }
 
-    # MOM_ask_event_type: name of the current event.
+    # MOM_ask_event_type: the current event's handler name (MOM_first_move),
+    # "" outside one (Post Builder's RAPID_SET compares it with
+    # "MOM_first_move", ugpost_base's warnings print it beside MOM_<motion>).
     method Cmd_ask_event_type {} {
-        $S(interp) eval {set ::fivax::mom::runtime::event}
+        set event [$S(interp) eval {set ::fivax::mom::runtime::event}]
+        expr {$event eq "" ? "" : "MOM_$event"}
     }
 
     # MOM_ask_env_var name: value of an environment variable, or "";
