@@ -245,6 +245,8 @@ fivax_handler MOM_start_of_program {
     set fivax(cycle) {}
     set fivax(spindleOn) 0
     set fivax(cutcomWarned) 0
+    set fivax(contactPrev) {}
+    set fivax(opContacts) 0
     set fivax(first) {}
     fivax_out [$fivax(out) start "[fivax_program_name] - [dict get $machine name]" \
         [fivax_program_name]]
@@ -256,6 +258,8 @@ fivax_handler MOM_start_of_path {
     fivax_out [list [$fivax(out) comment "OPERATION $mom_path_name"]]
     set fivax(opStart) 1
     set fivax(cutcomWarned) 0
+    set fivax(contactPrev) {}
+    set fivax(opContacts) 0
 }
 
 fivax_handler MOM_msys {
@@ -334,11 +338,16 @@ proc fivax_tool_length {what} {
 
 # fivax_tool_comment --
 #	Returns the text FIVAX TOOL n LENGTH L RADIUS R of tool number n of
-#	length len: R from mom_tool_diameter, left out when the CL gives none.
+#	length len: R from mom_tool_diameter, left out when the CL gives none;
+#	with -cutcom3d post the radius and CORNER radius of the cutter the
+#	program is compensated for.
 proc fivax_tool_comment {n len} {
-    global mom_tool_diameter
+    global fivax mom_tool_diameter
     set text [format "FIVAX TOOL %d LENGTH %.3f" $n $len]
-    if {[info exists mom_tool_diameter] && [string is double -strict $mom_tool_diameter]
+    if {[dict get $fivax(settings) -cutcom3d] eq "post"} {
+        lassign [lindex [fivax_cutters] 1] D r
+        append text [format " RADIUS %.3f CORNER %.3f" [expr {$D / 2.0}] $r]
+    } elseif {[info exists mom_tool_diameter] && [string is double -strict $mom_tool_diameter]
             && $mom_tool_diameter > 0} {
         append text [format " RADIUS %.3f" [expr {$mom_tool_diameter / 2.0}]]
     }
@@ -643,6 +652,14 @@ proc fivax_arc {} {
     global mom_arc_direction mom_arc_times mom_tool_axis mom_feed_rate
     set feed [expr {[info exists mom_feed_rate] ? $mom_feed_rate : 0.0}]
     if {!($feed > 0)} {fivax_feed_zero $feed arc}
+    if {[dict get $fivax(settings) -cutcom3d] eq "post"} {
+        global mom_contact_status
+        if {[info exists mom_contact_status] && $mom_contact_status eq "ON"} {
+            fivax::Fail CUTCOM ARC "-cutcom3d post: an arc with contact data cannot be\
+                compensated: output the path as points (no CIRCLE records)"
+        }
+        set fivax(contactPrev) {}
+    }
     fivax_cutting "arc"
     set xyz {0 1 2}
     fivax_emit [$fivax(plan) arc [lmap i $xyz {set mom_prev_mcs_goto($i)}] \
@@ -693,10 +710,59 @@ proc fivax_motion {kind {point ""}} {
     if {$kind eq "feed"} {fivax_cutting "cutting move"}
     if {$point eq ""} {
         set point [list $mom_mcs_goto(0) $mom_mcs_goto(1) $mom_mcs_goto(2)]
+        if {[dict get $fivax(settings) -cutcom3d] eq "post"} {set point [fivax_cutcom3d $kind $point]}
     }
     fivax_emit [$fivax(plan) add $kind $point \
         [list $mom_tool_axis(0) $mom_tool_axis(1) $mom_tool_axis(2)] \
         $feed [fivax_where]]
+}
+
+# 3D tool-radius compensation by the post (-cutcom3d post): a cutting
+# move whose GOTO came with contact data (NX's mom_contact_status ON,
+# mom_contact_point, mom_contact_normal) goes to the planner moved for the
+# cutter in the spindle (fivax::cutcom compensate: same contact, same
+# normal); the rest of the pipeline (linearisation, limits, the block
+# check, the dry run) runs on the moved point. Rapids and moves without
+# contact data stay as programmed; an operation with none at all is
+# warned about at its end.
+
+# fivax_cutcom3d --
+#	Returns the CL point of a move of kind (rapid or feed) for the cutter
+#	in the spindle. Errors where the contact data do not fit the point,
+#	or where the surface bends concavely tighter than the cutter's corner
+#	radius between two consecutive contacts (it would gouge there).
+proc fivax_cutcom3d {kind point} {
+    global fivax mom_contact_status mom_contact_point mom_contact_normal mom_tool_axis
+    if {$kind ne "feed" || ![info exists mom_contact_status] || $mom_contact_status ne "ON"} {
+        set fivax(contactPrev) {}
+        return $point
+    }
+    set xyz {0 1 2}
+    set C [lmap i $xyz {set mom_contact_point($i)}]
+    set n [lmap i $xyz {set mom_contact_normal($i)}]
+    lassign [fivax_cutters] programmed actual
+    if {[llength $fivax(contactPrev)]} {
+        set why [fivax::cutcom fits [fivax::cutcom concaveRadius {*}$fivax(contactPrev) $C $n] \
+            {*}$actual]
+        if {$why ne ""} {
+            fivax::Fail CUTCOM GOUGE [format "-cutcom3d post: %s: it would gouge where the\
+                programmed cutter D %g r %g did not" $why {*}$programmed]
+        }
+    }
+    set fivax(contactPrev) [list $C $n]
+    incr fivax(opContacts)
+    fivax::cutcom compensate $point [lmap i $xyz {set mom_tool_axis($i)}] $C $n $programmed $actual
+}
+
+# fivax_cutters --
+#	Returns {programmed actual}, the cutters {D r} of -cutcom3d post: the
+#	CL's (TLDATA: mom_tool_diameter, mom_tool_corner1_radius) and the one
+#	in the spindle (-tool-diameter, -tool-corner-radius).
+proc fivax_cutters {} {
+    global fivax mom_tool_diameter mom_tool_corner1_radius
+    fivax::cutcom cutters [expr {[info exists mom_tool_diameter] ? $mom_tool_diameter : 0.0}] \
+        [expr {[info exists mom_tool_corner1_radius] ? $mom_tool_corner1_radius : 0.0}] \
+        [dict get $fivax(settings) -tool-diameter] [dict get $fivax(settings) -tool-corner-radius]
 }
 
 # fivax_feed_zero --
@@ -828,6 +894,10 @@ proc fivax_emit {moves} {
 fivax_handler MOM_end_of_path {
     global fivax
     fivax_settle
+    if {[dict get $fivax(settings) -cutcom3d] eq "post" && !$fivax(opContacts)} {
+        fivax_warn "-cutcom3d post: the operation has no contact data (CONTACT records):\
+            its moves are posted for the CL's cutter, not compensated"
+    }
     fivax_emit [$fivax(plan) endPath]
 }
 
