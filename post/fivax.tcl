@@ -247,6 +247,7 @@ fivax_handler MOM_start_of_program {
     set fivax(cutcomWarned) 0
     set fivax(contactPrev) {}
     set fivax(opContacts) 0
+    set fivax(cutcomQueue) {}
     set fivax(first) {}
     fivax_out [$fivax(out) start "[fivax_program_name] - [dict get $machine name]" \
         [fivax_program_name]]
@@ -453,21 +454,69 @@ proc fivax_coolant {} {
     fivax_out [$fivax(out) coolant [expr {[info exists mom_coolant_mode] ? $mom_coolant_mode : "ON"}]]
 }
 
-# Cutter compensation: fivax writes no G41/G42 (nor Klartext RL/RR). The
-# CL files that program CUTCOM carry the tool centre path (NX "centerline
-# data", Creo OUTPUT_ON_CENTER, SolidWorks CAM's path offset by the tool
-# radius), which is posted as it is: the control's wear compensation is
-# not applied, and the operation's first CUTCOM/LEFT, RIGHT or ON says so.
+# 2D cutter compensation (CUTCOM/LEFT|RIGHT|OFF: MOM_cutcom_on/off with
+# mom_cutcom_mode, mom_cutcom_register). The CL is the tool centre path
+# (NX "centerline data", Creo OUTPUT_ON_CENTER, SolidWorks CAM's path
+# offset by the tool radius): the output layer writes G41/G42 D (Klartext
+# RL/RR) where the tool stands along the Z of the written X Y Z (3-axis,
+# 3+2) for the control's wear correction, G40 (R0) at CUTCOM/OFF, and
+# warns where it cannot (simultaneous five-axis). The planner holds moves
+# (a whole operation for its work plane), so a change waits in
+# fivax(cutcomQueue) for the first move from a later CL line (fivax_emit);
+# without CL lines (inside NX) the planner's moves go out first. The
+# operation's first CUTCOM says that the register holds the wear.
 fivax_handler MOM_cutcom_on {
-    global fivax mom_cutcom_mode
+    global fivax mom_cutcom_mode mom_cutcom_register
+    set mode [expr {[info exists mom_cutcom_mode] ? $mom_cutcom_mode : "ON"}]
+    if {$mode ni {LEFT RIGHT}} {
+        fivax_warn "CUTCOM/$mode names no side (LEFT or RIGHT): no cutter compensation written,\
+            the CL path is posted as the tool centre path"
+        return
+    }
+    set reg [lindex $fivax(tool) 0]
+    if {[info exists mom_cutcom_register] && [string is entier -strict $mom_cutcom_register]
+            && $mom_cutcom_register > 0} {
+        set reg $mom_cutcom_register
+    }
+    if {![string is entier -strict $reg]} {set reg 0}
+    fivax_cutcom $mode $reg
     if {$fivax(cutcomWarned)} return
     set fivax(cutcomWarned) 1
-    set mode [expr {[info exists mom_cutcom_mode] ? $mom_cutcom_mode : "ON"}]
-    fivax_warn "CUTCOM/$mode: fivax writes no cutter compensation (G41/G42): the CL path\
-        is posted as the tool centre path, without the control's wear compensation"
+    fivax_warn "CUTCOM/$mode: the CL path is the tool centre path, written with the control's\
+        cutter compensation (G41/G42, RL/RR) where the tool stands along Z: its register must\
+        hold the wear (actual less programmed radius), not the radius"
 }
 
-proc MOM_cutcom_off {} {}
+fivax_handler MOM_cutcom_off {fivax_cutcom OFF 0}
+
+# fivax_cutcom --
+#	Passes the compensation side (LEFT, RIGHT, OFF) with register reg to
+#	the output layer before the first move of a later CL line.
+proc fivax_cutcom {side reg} {
+    global fivax mom_cl_line
+    if {[info exists mom_cl_line]} {
+        lappend fivax(cutcomQueue) [list $mom_cl_line $side $reg]
+    } else {
+        fivax_emit [$fivax(plan) flush]
+        $fivax(out) cutcom $side $reg
+    }
+}
+
+# fivax_cutcom_due --
+#	Passes the waiting compensation changes of CL lines before src (a
+#	move's FILE:LINE; "" for a move of no CL line: none) to the output
+#	layer, all of them when src is "end".
+proc fivax_cutcom_due {src} {
+    global fivax
+    if {$src eq ""} return
+    set line [expr {$src eq "end" ? Inf : [lindex [split $src :] end]}]
+    while {[llength $fivax(cutcomQueue)]} {
+        lassign [lindex $fivax(cutcomQueue) 0] at side reg
+        if {!($at < $line)} break
+        set fivax(cutcomQueue) [lrange $fivax(cutcomQueue) 1 end]
+        $fivax(out) cutcom $side $reg
+    }
+}
 
 # The first motion of an operation. NX fires MOM_initial_move for it
 # after a tool change, else MOM_first_move ("This event occurs at the
@@ -868,6 +917,7 @@ fivax_handler MOM_cycle_off {
 proc fivax_emit {moves} {
     global fivax
     foreach move $moves {
+        if {[llength $fivax(cutcomQueue)]} {fivax_cutcom_due [dict get $move src]}
         if {[dict get $move kind] eq "retract"} {
             fivax_log "retract at [dict get $move src]: [dict get $move note]"
         }
@@ -899,6 +949,7 @@ fivax_handler MOM_end_of_path {
             its moves are posted for the CL's cutter, not compensated"
     }
     fivax_emit [$fivax(plan) endPath]
+    fivax_cutcom_due end
 }
 
 fivax_handler MOM_pprint {

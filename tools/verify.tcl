@@ -112,7 +112,8 @@ proc ::verifytool::Run {opts path machine tools} {
         opIndex -1 clPoints {} clLength "" length "" cursor 0 prev {} cutU "" breakU "" rows {} \
         warnings {} tooling [::fivax::dryrun tooling $tools [dict get $opts -tool-length]] \
         names [lmap a [dict get $machine chain] {dict get $a name}] \
-        rollover [lmap a [dict get $machine chain] {dict get $a rollover}] cl {}]
+        rollover [lmap a [dict get $machine chain] {dict get $a rollover}] cl {} \
+        cutcom 0 cutcomBlocks 0]
     set S(checker) [::fivax::verify create $machine -table-offset [dict get $opts -table-offset] \
         -controller [dict get $opts -controller]]
     if {[dict get $opts -cl] ne ""} {
@@ -162,6 +163,7 @@ proc ::verifytool::Line {line where n} {
     foreach c [dict get $blk comments] {
         if {[regexp {^\s*OPERATION\s+(.*?)\s*$} $c -> name]} {StartOp $name}
     }
+    Cutcom $line $blk
     set S(tooling) [::fivax::dryrun toolStep $S(tooling) $blk]
     foreach note [dict get $S(tooling) notes] {
         lassign $note kind what
@@ -257,6 +259,24 @@ proc ::verifytool::SetLength {} {
     if {$S(length) ne "" && $len == $S(length)} return
     set S(length) $len
     $S(checker) setTool $len
+}
+
+# ::verifytool::Cutcom --
+#	Follows 2D cutter radius compensation (G41/G42 on, G40 off; Klartext
+#	RL/RR, R0) through the NC line and its read block blk, counting the
+#	motion blocks under it: they are back-plotted as programmed (the
+#	path the CL gives), while the control offsets them by the radius in
+#	its register (the post's programs: the wear).
+proc ::verifytool::Cutcom {line blk} {
+    variable S
+    foreach {letter v} [dict get $blk words] {
+        if {$letter eq "G" && $v in {40 41 42}} {set S(cutcom) [expr {$v != 40}]}
+    }
+    # (Klartext: the radius word of an L or C block)
+    if {[regexp {^\s*\d+\s+[LC]\M.*\mR([0LR])(\s|$)} $line -> side]} {
+        set S(cutcom) [expr {$side ne "0"}]
+    }
+    if {$S(cutcom) && [llength [dict get $blk moved]]} {incr S(cutcomBlocks)}
 }
 
 # ::verifytool::Cutter --
@@ -755,6 +775,11 @@ proc ::verifytool::main {argv} {
         ::fivax::nctool die "verify: $msg"
     }
     Say $opts "verify: [file tail $path] on [dict get $machine name] ([dict get $opts -machine])"
+    if {$::verifytool::S(cutcomBlocks)} {
+        puts stderr "verify: note: $::verifytool::S(cutcomBlocks) motion blocks under cutter radius\
+            compensation (G41/G42, RL/RR) are back-plotted as programmed: the control offsets\
+            them by the radius in its register"
+    }
     Report $opts $ops $names [expr {[dict get $opts -cl] ne ""}]
     dict for {kind n} $warnings {
         lappend problems "$n words of kind '$kind' not understood (a program it cannot read is not verified)"
