@@ -926,10 +926,11 @@ oo::class create ::fivax::output::Writer {
     }
 
     # Returns the side of compensation (LEFT, RIGHT, "") in effect with
-    # the move record rec (a feed move when isFeed: the compensation comes
-    # on with one across the plane, X or Y changing), and warns where the CL's compensation cannot be
-    # written: the tool off the Z of the X Y Z (CutcomFits), or the
-    # rotaries leaving the angles it came on at.
+    # the move record rec (a feed move when isFeed: the compensation
+    # comes on with one across the plane, X or Y changing), and warns
+    # where the CL's compensation cannot be written: the tool off the Z of
+    # the X Y Z (CutcomFits), or the rotaries leaving the angles it came
+    # on at.
     method CutcomStep {rec isFeed} {
         set want $S(cutcomSide)
         if {$want eq "" && $S(cutcomOn) eq ""} {return ""}
