@@ -94,7 +94,10 @@ namespace eval ::fivax::output {
     #   cutcom     2D cutter compensation (CUTCOM/LEFT|RIGHT|OFF, see
     #              cutcom): G41/G42/G40 with the register as D (GD), the
     #              same without D (G: Sinumerik's active D1 is the edge),
-    #              or Klartext RL/RR/R0 in the L and C blocks (R)
+    #              Klartext RL/RR/R0 in the L and C blocks (R), or {}
+    #              none (LinuxCNC 2.9: its G41/G42 offset by the tool
+    #              table's diameter, twice the radius on a tool centre
+    #              path, and its interpreter refuses such a program)
     variable Dialects {
         fanuc {
             syntax gcode program O%04d percent 1 comment paren
@@ -147,7 +150,7 @@ namespace eval ::fivax::output {
             active {MSG DEBUG PRINT LOG LOGOPEN LOGAPPEND LOGCLOSE PROBEOPEN PROBECLOSE
                 ABORT PY PYRUN PYRELOAD}
             ends {{2 30 99} {%}}
-            cutcom GD
+            cutcom {}
         }
     }
     # The angle convention of each work-plane form (see lib/plane.tcl).
@@ -286,7 +289,7 @@ oo::class create ::fivax::output::Writer {
     # for (LEFT, RIGHT, "" off) and its register, S(cutcomOn): the side
     # in effect on the control (see cutcom), S(cutcomCode): its G code
     # last written (40 from the safety line), S(cutcomRot): the rotary
-    # angles it came on at.
+    # angles it came on at, S(cutcomNone): the dialect's lack of it said.
     # After G80 Z and the motion code are
     # written again: the tool stands at the initial level, and the motion
     # mode is stated afresh.
@@ -332,6 +335,7 @@ oo::class create ::fivax::output::Writer {
         set S(cutcomReg) 0
         set S(cutcomCode) 40
         set S(cutcomRot) {}
+        set S(cutcomNone) 0
         set S(klartext) [expr {[dict get $S(dialect) syntax] eq "klartext"}]
         set S(codes) [::fivax::output::CodesOf $S(klartext)]
         if {!$S(klartext)} {
@@ -923,6 +927,17 @@ oo::class create ::fivax::output::Writer {
     method cutcom {side register} {
         set S(cutcomSide) [expr {$side in {LEFT RIGHT} ? $side : ""}]
         set S(cutcomReg) $register
+        if {$S(cutcomSide) ne "" && [dict get $S(dialect) cutcom] eq ""} {
+            set S(cutcomSide) ""
+            set warn [dict get $S(cfg) -warn]
+            if {[llength $warn] && !$S(cutcomNone)} {
+                set S(cutcomNone) 1
+                {*}$warn "CUTCOM/$side: [dict get $S(cfg) -controller] takes the cutter's whole\
+                    diameter from its tool table (G41/G42), which would offset this tool centre\
+                    path twice: no cutter compensation written (said once), the CL path is\
+                    posted as the tool centre path"
+            }
+        }
     }
 
     # Returns the side of compensation (LEFT, RIGHT, "") in effect with
