@@ -441,6 +441,7 @@ proc ::fivax::clsf::parse {text file line} {
         CIRCLE      {return [ParseCircle $rest $file $line]}
         FEDRAT      {return [ParseFedrat $rest $file $line]}
         CUTCOM      {return [ParseCutcom $rest $file $line]}
+        CONTACT     {return [ParseContact $rest $file $line]}
         PPRINT - INSERT - PARTNO {
             return [dict create kind $major file $file line $line \
                         text [string trim $rest]]
@@ -708,6 +709,28 @@ proc ::fivax::clsf::ParseCutcom {rest file line} {
         ::fivax::Fail CLSF WORD "$file:$line: CUTCOM: expected LEFT, RIGHT, ON or OFF"
     }
     dict create kind CUTCOM file $file line $line mode $mode plane $plane register $reg
+}
+
+# ::fivax::clsf::ParseContact --
+#	Returns a CONTACT record: point (the contact point, MCS) and normal
+#	(the unit surface normal there, pointing out of the material) from
+#	CONTACT/x,y,z,i,j,k. It belongs to the GOTO that follows it (the
+#	contact data of that CL point: NX's mom_contact_point and
+#	mom_contact_normal; a record before the motion it describes, as
+#	SprutCAM's TLContact). NX documents the variables, not the CLSF text
+#	of its "Output Contact Data": this form is fivax's (README, Contact
+#	data).
+proc ::fivax::clsf::ParseContact {rest file line} {
+    set toks [Tokens $rest]
+    if {[llength $toks] != 6} {
+        ::fivax::Fail CLSF COUNT "$file:$line: CONTACT: expected 6 numbers (contact point and\
+            surface normal), got [llength $toks]"
+    }
+    lassign $toks x y z i j k
+    set point [Nums [list $x $y $z] $file $line CONTACT]
+    Reach $point $file $line CONTACT
+    dict create kind CONTACT file $file line $line point $point \
+        normal [Axis $i $j $k $file $line CONTACT "surface normal"]
 }
 
 # ::fivax::clsf::ParseToolPath --

@@ -420,21 +420,23 @@ proc ::fivax::dryrun::SetLength {checker len} {
 #	with it.
 proc ::fivax::dryrun::tooling {tools override} {
     dict create tools $tools override $override pending "" tool "" length $override radius "" \
-        called 0 notes {}
+        corner "" called 0 notes {}
 }
 
 # ::fivax::dryrun::toolStep --
 #	Returns the follower state after one NC line read by a verify Checker
 #	(blk: its read dict): its tool calls (M6 calls the last T; the
 #	Checker reads Klartext's TOOL CALL n as T n M6), then
-#	its comments "FIVAX TOOL n LENGTH L ?RADIUS R?" (the tool the
-#	program's X Y Z were computed for). Keys:
+#	its comments "FIVAX TOOL n LENGTH L ?RADIUS R ?CORNER r??" (the tool
+#	the program's X Y Z were computed for; CORNER: a program compensated
+#	for that cutter, -cutcom3d post). Keys:
 #	  tool    the tool in the spindle: the last called or commented (""
 #	          before any)
 #	  length  the tool length to compute with: the override, else the
 #	          tool table's length of the tool called or commented, else
 #	          the comment's; "" while none is known (keep the last one)
 #	  radius  the tool table's radius, else the comment's; "" likewise
+#	  corner  the corner radius of the last comment, "" when it gives none
 #	  called  1 when the line called a tool into the spindle
 #	  notes   this line's {kind what}: "unreadable" (a FIVAX TOOL comment
 #	          not understood), "toollength" (the comment's length differs
@@ -462,7 +464,8 @@ proc ::fivax::dryrun::toolStep {state blk} {
     set num {([-+]?[0-9]*\.?[0-9]+)}
     foreach c [dict get $blk comments] {
         if {![regexp {^\s*FIVAX TOOL\M} $c]} continue
-        if {![regexp "^\\s*FIVAX TOOL (\\d+) LENGTH ${num}(?: RADIUS ${num})?\\s*\$" $c -> tool len rad]} {
+        if {![regexp "^\\s*FIVAX TOOL (\\d+) LENGTH ${num}(?: RADIUS ${num}(?: CORNER ${num})?)?\\s*\$" \
+                $c -> tool len rad corner]} {
             dict lappend state notes [list unreadable "tool comment not understood: $c"]
             continue
         }
@@ -475,6 +478,7 @@ proc ::fivax::dryrun::toolStep {state blk} {
                 $len, the tool table has [dict get $entry length]"]
         }
         if {$rad ne "" && ![dict exists $entry radius]} {dict set state radius [::fivax::num::parse $rad]}
+        dict set state corner [expr {$corner eq "" ? "" : [::fivax::num::parse $corner]}]
         if {![dict exists $entry length] && $override eq ""} {dict set state length $x}
     }
     return $state

@@ -7,7 +7,8 @@
 #	    clsf               CL file reader             (replay's host side)
 #	    mom def            NX's MOM runtime, .def files (replay's host side)
 #	    machine kin        machine files, kinematics
-#	    curve plane motion/  CL path geometry, work-plane frames, the planner
+#	    curve cutcom plane motion/  CL path geometry, 3D cutter compensation,
+#	                       work-plane frames, the planner
 #	    nc output          blocks, the dialect output layer
 #	    verify dryrun      checking written blocks, the machine dry run
 #	    settings           the option table of a posting job
@@ -29,7 +30,7 @@ foreach ::fivax::File {
     num.tcl opts.tcl vec.tcl
     clsf.tcl mom.tcl def.tcl
     machine.tcl kin.tcl
-    curve.tcl plane.tcl motion/plan.tcl motion/candidates.tcl motion/moves.tcl
+    curve.tcl cutcom.tcl plane.tcl motion/plan.tcl motion/candidates.tcl motion/moves.tcl
     motion/linearise.tcl motion/feeds.tcl motion/holes.tcl motion/frames.tcl
     nc.tcl output.tcl
     verify.tcl dryrun.tcl

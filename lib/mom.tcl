@@ -434,7 +434,7 @@ oo::class create ::fivax::mom::Runtime {
             toolNames {} msysPending 0 unknown {} udes {}
             scale 1.0 clUnit MM outUnit MM unitsSeen 0 firstUnit MM nurbs {}
             files {} machineTime 0.0 cuttingTime 0.0 fpm 0.0 moveLength 0.0
-            modeFired 0
+            modeFired 0 contact {} contactOn 0
         }
         set my [namespace which my]
         set S(nc) [::fivax::nc::create -sequence 0 -overflow [list $my SequenceOverflow] \
@@ -732,13 +732,14 @@ oo::class create ::fivax::mom::Runtime {
             SPINDL    {my Spindle $rec}
             COOLNT    {my Coolant $rec}
             CUTCOM    {my Cutcom $rec}
+            CONTACT   {my Contact $rec}
             FROM      {my FromHome $rec from}
             GOHOME    {my FromHome $rec gohome}
             TLAXIS    {set S(axis) [dict get $rec axis]}
             PPRINT    {my Globals [list mom_pprint [dict get $rec text]]; my Fire pprint}
             INSERT    {my Globals [list mom_Instruction [dict get $rec text]]; my Fire insert}
             PARTNO    {my Globals [list mom_part_name [dict get $rec text]]}
-            END_OF_PATH {if {$S(pathOpen)} {my EndPath}}
+            END_OF_PATH {my ContactDone $rec; if {$S(pathOpen)} {my EndPath}}
             STOP      {my EnsurePath; my Fire stop}
             OPSTOP    {my EnsurePath; my Fire opstop}
             DELAY     {my Delay $rec}
@@ -950,6 +951,7 @@ oo::class create ::fivax::mom::Runtime {
     method Motion {rec} {
         if {!$S(pathOpen) || $S(headerPending)} {my EnsurePath}
         if {[llength [dict get $rec axis]]} {set S(axis) [dict get $rec axis]}
+        if {[llength $S(contact)] || $S(contactOn)} {my ContactGlobals}
         set point [dict get $rec point]
         if {[llength $S(circle)] && ($S(rapid) || [llength $S(cycle)])} {
             ::fivax::Fail MOM ARC "[::fivax::mom::Where $S(circle)]: CIRCLE: the next GOTO\
@@ -1325,6 +1327,41 @@ oo::class create ::fivax::mom::Runtime {
         }
         my Globals $pairs
         my Fire [expr {$mode eq "OFF" ? "cutcom_off" : "cutcom_on"}]
+    }
+
+    # Contact -- CONTACT: keeps the contact data for the GOTO that follows it.
+    method Contact {rec} {
+        my ContactDone $rec
+        set S(contact) $rec
+    }
+
+    # ContactDone --
+    #	Errors {FIVAX MOM CONTACT} when a CONTACT is still waiting for its
+    #	GOTO at rec (another CONTACT, or the end of the path).
+    method ContactDone {rec} {
+        if {![llength $S(contact)]} return
+        set what [expr {[dict get $rec kind] eq "CONTACT" ? "another CONTACT" : "the end of the path"}]
+        set at [::fivax::mom::Where $S(contact)]
+        set S(contact) {}
+        ::fivax::Fail MOM CONTACT "$at: CONTACT: no GOTO follows it before $what\
+            (line [dict get $rec line]): contact data belong to the next GOTO"
+    }
+
+    # ContactGlobals --
+    #	Sets NX's contact variables for the motion of the GOTO being read:
+    #	mom_contact_status ON with mom_contact_point(3) and
+    #	mom_contact_normal(3) when a CONTACT came before it, else OFF.
+    method ContactGlobals {} {
+        if {[llength $S(contact)]} {
+            my Globals {mom_contact_status ON}
+            my Array mom_contact_point [dict get $S(contact) point]
+            my Array mom_contact_normal [dict get $S(contact) normal]
+            set S(contact) {}
+            set S(contactOn) 1
+        } else {
+            my Globals {mom_contact_status OFF}
+            set S(contactOn) 0
+        }
     }
 
     # Delay -- DELAY: fires MOM_delay with mom_delay_value (seconds) or mom_delay_revs.

@@ -91,6 +91,13 @@ namespace eval ::fivax::output {
     #   ends       what ends the program in a line of NC text: {M codes,
     #              list of regexps} (an INSERT holding one is an error, see
     #              literal)
+    #   cutcom     2D cutter compensation (CUTCOM/LEFT|RIGHT|OFF, see
+    #              cutcom): G41/G42/G40 with the register as D (GD), the
+    #              same without D (G: Sinumerik's active D1 is the edge),
+    #              Klartext RL/RR/R0 in the L and C blocks (R), or {}
+    #              none (LinuxCNC 2.9: its G41/G42 offset by the tool
+    #              table's diameter, twice the radius on a tool centre
+    #              path, and its interpreter refuses such a program)
     variable Dialects {
         fanuc {
             syntax gcode program O%04d percent 1 comment paren
@@ -103,6 +110,7 @@ namespace eval ::fivax::output {
             letters {G M F S T H D P Q R I J K L}
             active {}
             ends {{2 30 99} {%}}
+            cutcom GD
         }
         sinumerik {
             syntax gcode program {} percent 0 comment semicolon
@@ -115,6 +123,7 @@ namespace eval ::fivax::output {
             letters {G M F S T D P Q R I J K L}
             active {}
             ends {{2 17 30} {{\mRET\M}}}
+            cutcom G
         }
         heidenhain {
             syntax klartext program {} percent 0 comment numbered
@@ -127,6 +136,7 @@ namespace eval ::fivax::output {
             letters {}
             active {}
             ends {{2 30} {{\mEND\s+PGM\M}}}
+            cutcom R
         }
         linuxcnc {
             syntax gcode program {} percent 1 comment paren
@@ -140,6 +150,7 @@ namespace eval ::fivax::output {
             active {MSG DEBUG PRINT LOG LOGOPEN LOGAPPEND LOGCLOSE PROBEOPEN PROBECLOSE
                 ABORT PY PYRUN PYRELOAD}
             ends {{2 30 99} {%}}
+            cutcom {}
         }
     }
     # The angle convention of each work-plane form (see lib/plane.tcl).
@@ -273,7 +284,12 @@ oo::class create ::fivax::output::Writer {
     # S(planeOn): a work plane is active; S(register): the length register
     # of the tool in the spindle; S(program): the Klartext program name;
     # S(arcPlane): the plane of the last arc; S(atSafe): nothing has moved
-    # since the last Z up in machine coordinates; S(machine): the machine.
+    # since the last Z up in machine coordinates; S(machine): the machine;
+    # S(cutcomSide), S(cutcomReg): the 2D cutter compensation the CL asks
+    # for (LEFT, RIGHT, "" off) and its register, S(cutcomOn): the side
+    # in effect on the control (see cutcom), S(cutcomCode): its G code
+    # last written (40 from the safety line), S(cutcomRot): the rotary
+    # angles it came on at, S(cutcomNone): the dialect's lack of it said.
     # After G80 Z and the motion code are
     # written again: the tool stands at the initial level, and the motion
     # mode is stated afresh.
@@ -314,6 +330,12 @@ oo::class create ::fivax::output::Writer {
         set S(arcPlane) 17
         set S(atSafe) 0
         set S(program) PART
+        set S(cutcomSide) ""
+        set S(cutcomOn) ""
+        set S(cutcomReg) 0
+        set S(cutcomCode) 40
+        set S(cutcomRot) {}
+        set S(cutcomNone) 0
         set S(klartext) [expr {[dict get $S(dialect) syntax] eq "klartext"}]
         set S(codes) [::fivax::output::CodesOf $S(klartext)]
         if {!$S(klartext)} {
@@ -842,13 +864,14 @@ oo::class create ::fivax::output::Writer {
             # first
             if {$S(pendingTool) ne ""} {lappend lines {*}[my ToolCall]}
             set words [::fivax::output::AxisWords {} $rec $S(xyzAddr) $S(rotAddr)]
+            set radius [my KlartextRadius [my CutcomStep $rec $isFeed]]
             if {$isFeed} {
                 if {$S(feedMode) ne "feed"} {$S(nc) force once KF}
                 set S(feedMode) feed
-                set tail [string trimright "R0 [$S(nc) block [list KF [dict get $rec rate]] 0]"]
+                set tail [string trimright "$radius [$S(nc) block [list KF [dict get $rec rate]] 0]"]
             } else {
                 set S(feedMode) rapid
-                set tail "R0 FMAX"
+                set tail "$radius FMAX"
             }
             lappend lines [$S(nc) block $words 1 [list "L " " $tail"]]
             return $lines
@@ -864,6 +887,7 @@ oo::class create ::fivax::output::Writer {
         } elseif {$S(length) && "Z" in $write} {
             lappend words {*}[my LengthWords]
         }
+        lappend words {*}[my CutcomWords [my CutcomStep $rec $isFeed]]
         if {$isFeed} {
             # (single-value lappends, as in AxisWords)
             lappend words G_feed
@@ -884,6 +908,115 @@ oo::class create ::fivax::output::Writer {
             lappend words [dict get $rec rate]
         }
         lappend lines [$S(nc) block $words]
+    }
+
+    # --- 2D cutter compensation (CUTCOM) ---------------------------------
+    # The CL of a CUTCOM is the tool centre path (NX centerline data,
+    # Creo OUTPUT_ON_CENTER, SolidWorks CAM), so the compensation written
+    # is the control's correction of it: its register holds the wear (the
+    # actual radius less the programmed), not the radius. It is meaningful
+    # where the contour lies in the plane the control offsets in, i.e. the
+    # tool stands along the Z of the written X Y Z (CutcomFits): 3-axis
+    # and 3+2 work; under rotary motion or a tilted tool (simultaneous
+    # five-axis) it is left off with a warning, never dropped silently.
+
+    # Sets the 2D cutter compensation the CL asks for: side LEFT, RIGHT or
+    # OFF, register the D register (0: none written). It comes on with the
+    # next feed move that fits (G41/G42, Klartext RL/RR; the control's
+    # approach move) and goes off with the next move (G40, R0).
+    method cutcom {side register} {
+        set S(cutcomSide) [expr {$side in {LEFT RIGHT} ? $side : ""}]
+        set S(cutcomReg) $register
+        if {$S(cutcomSide) ne "" && [dict get $S(dialect) cutcom] eq ""} {
+            set S(cutcomSide) ""
+            set warn [dict get $S(cfg) -warn]
+            if {[llength $warn] && !$S(cutcomNone)} {
+                set S(cutcomNone) 1
+                {*}$warn "CUTCOM/$side: [dict get $S(cfg) -controller] takes the cutter's whole\
+                    diameter from its tool table (G41/G42), which would offset this tool centre\
+                    path twice: no cutter compensation written (said once), the CL path is\
+                    posted as the tool centre path"
+            }
+        }
+    }
+
+    # Returns the side of compensation (LEFT, RIGHT, "") in effect with
+    # the move record rec (a feed move when isFeed: the compensation
+    # comes on with one across the plane, X or Y changing), and warns
+    # where the CL's compensation cannot be written: the tool off the Z of
+    # the X Y Z (CutcomFits), or the rotaries leaving the angles it came
+    # on at.
+    method CutcomStep {rec isFeed} {
+        set want $S(cutcomSide)
+        if {$want eq "" && $S(cutcomOn) eq ""} {return ""}
+        set rot [lmap r $S(rotaries) {dict get $rec axes [lindex $r 0]}]
+        if {$want ne "" && $S(cutcomOn) eq "" && !($isFeed && [my MovesInPlane $rec])} {
+            # (it comes on with a cut across the plane: the control's approach)
+            return ""
+        }
+        if {$want ne "" && (![my CutcomFits $rec]
+                || ($S(cutcomOn) ne "" && ![::fivax::output::SameAngles $rot $S(cutcomRot)]))} {
+            set warn [dict get $S(cfg) -warn]
+            if {[llength $warn]} {
+                {*}$warn "CUTCOM/$want with the tool off the Z of the written X Y Z or\
+                    turning (simultaneous five-axis, a tilted tool) at the move of\
+                    [dict get $rec src]: no cutter compensation from there (G40, R0), the CL\
+                    path is posted as the tool centre path"
+            }
+            set S(cutcomSide) ""
+            set want ""
+        }
+        if {$want ne "" && $S(cutcomOn) eq ""} {set S(cutcomRot) $rot}
+        set S(cutcomOn) $want
+    }
+
+    # Returns 1 when move record rec changes the written X or Y.
+    method MovesInPlane {rec} {
+        foreach axis {X Y} {
+            set addr [dict get $S(xyzAddr) $axis]
+            set last [$S(nc) value $addr]
+            set half [expr {0.5 * 10.0 ** -[$S(nc) decimals $addr]}]
+            if {$last eq "" || abs([dict get $rec axes $axis] - $last) >= $half} {return 1}
+        }
+        return 0
+    }
+
+    # Returns 1 when the tool of move record rec stands along the Z of the
+    # X Y Z written (the plane G41/G42 offset in): in a work plane (the
+    # plane's Z is the tool axis), with TCP when the tool axis is the
+    # workpiece's Z, else when it is the machine's Z: always on a
+    # table-table machine (the tool does not turn), on a head with the
+    # head's rotaries at 0.
+    method CutcomFits {rec} {
+        if {$S(planeOn)} {return 1}
+        if {$S(tcpOn) || $S(tcpArmed)} {
+            set t [dict get $rec t]
+            return [expr {[llength $t] == 3 && [::fivax::vec::angle $t {0.0 0.0 1.0}] < 1e-6}]
+        }
+        foreach axis [dict get $S(machine) chain] {
+            if {[dict get $axis side] eq "head"
+                    && abs([dict get $rec axes [dict get $axis name]]) > 1e-9} {return 0}
+        }
+        return 1
+    }
+
+    # Returns the words of a G-code block that bring the compensation to
+    # side (see CutcomStep): G41/G42 (with D on a GD dialect), G40, or
+    # none when the control's is that already.
+    method CutcomWords {side} {
+        set code [dict get {LEFT 41 RIGHT 42 {} 40} $side]
+        if {$code == $S(cutcomCode)} {return {}}
+        set S(cutcomCode) $code
+        set words [list G_cutcom $code]
+        if {$code != 40 && [dict get $S(dialect) cutcom] eq "GD" && $S(cutcomReg) > 0} {
+            lappend words D $S(cutcomReg)
+        }
+        return $words
+    }
+
+    # Returns the Klartext radius word of side: RL, RR or R0.
+    method KlartextRadius {side} {
+        dict get {LEFT RL RIGHT RR {} R0} $side
     }
 
     # Returns the Klartext line "L M.." of the M words (through the modal
@@ -922,7 +1055,7 @@ oo::class create ::fivax::output::Writer {
             set S(feedMode) feed
             $S(nc) force once {KX KY}
             set xy [$S(nc) block [list KX [dict get $rec axes X] KY [dict get $rec axes Y]] 0]
-            set words [list C $xy DR[expr {$dir == 2 ? "-" : "+"}] R0 \
+            set words [list C $xy DR[expr {$dir == 2 ? "-" : "+"}] [my KlartextRadius $S(cutcomOn)] \
                 [$S(nc) block [list KF [dict get $rec rate]] 0]]
             lappend lines [$S(nc) line [join [lsearch -all -inline -not -exact $words ""]]]
             return $lines
@@ -1058,6 +1191,15 @@ oo::class create ::fivax::output::Writer {
         }
         return $text
     }
+}
+
+# ::fivax::output::SameAngles --
+#	Returns 1 when the angle lists a and b (rad) agree within 1e-9.
+proc ::fivax::output::SameAngles {a b} {
+    foreach x $a y $b {
+        if {$x eq "" || $y eq "" || abs($x - $y) > 1e-9} {return 0}
+    }
+    return 1
 }
 
 # ::fivax::output::AxisWords --

@@ -5,7 +5,7 @@
 #	arc tolerance) and those of the planner, each spelt once.
 
 namespace eval ::fivax::settings {
-    namespace export table parse complete pick check output
+    namespace export table parse complete pick check output cutter
     namespace ensemble create -prefixes 0
     # The machine of a job that names none.
     variable defaultMachine [file join $::fivax::machine::shippedDir hh-tilt45.tcl]
@@ -18,6 +18,11 @@ namespace eval ::fivax::settings {
             "file for warnings, retracts and errors (default: <output>.log beside the NC file when the host names it)"}
         {-dryrun {enum on off} on WHEN
             "machine dry run of the written program at its end (lib/dryrun.tcl): any event ends posting with an error"}
+        {-cutcom3d {enum off post} off MODE
+            "3D tool-radius compensation: off, or post (every cutting move with contact data (CONTACT records) moved for the cutter -tool-diameter, -tool-corner-radius)"}
+        {-tool-diameter {maybe real gt 0} {} MM "diameter of the cutter in the spindle, for -cutcom3d post"}
+        {-tool-corner-radius {maybe real min 0} {} MM
+            "corner radius of the cutter in the spindle, for -cutcom3d post (default: the CL cutter's, at most half the diameter)"}
     }
 }
 
@@ -93,14 +98,40 @@ proc ::fivax::settings::check {settings machine resolution {who fivax_settings}}
                 $res$unit, the output resolution of $what on [dict get $machine name]"
         }
     }
+    cutter $settings $who
     set max $::fivax::machine::maxLength
-    foreach opt {-table-offset -clearance -tool-length} {
+    foreach opt {-table-offset -clearance -tool-length -tool-diameter -tool-corner-radius} {
         foreach v [dict get $settings $opt] {
             if {abs($v) > $max} {
                 ::fivax::Fail OPTION VALUE "$who: bad $opt \"[dict get $settings $opt]\":\
                     must be at most [format %g $max] in magnitude"
             }
         }
+    }
+}
+
+# ::fivax::settings::cutter --
+#	Checks the cutter of -cutcom3d post in the options dict settings (the
+#	post's, tools/verify.tcl's): -tool-diameter given with it (and only
+#	with it, like -tool-corner-radius), the corner radius at most half the
+#	diameter. who prefixes messages. Errors: {FIVAX OPTION VALUE}.
+proc ::fivax::settings::cutter {settings who} {
+    set D [dict get $settings -tool-diameter]
+    set r [dict get $settings -tool-corner-radius]
+    if {[dict get $settings -cutcom3d] ne "post"} {
+        if {$D ne "" || $r ne ""} {
+            ::fivax::Fail OPTION VALUE "$who: -tool-diameter and -tool-corner-radius describe\
+                the cutter of -cutcom3d post: give -cutcom3d post with them"
+        }
+        return
+    }
+    if {$D eq ""} {
+        ::fivax::Fail OPTION VALUE "$who: -cutcom3d post needs the cutter in the spindle:\
+            give -tool-diameter MM (and -tool-corner-radius MM)"
+    }
+    if {$r ne "" && $r > $D / 2.0} {
+        ::fivax::Fail OPTION VALUE "$who: bad -tool-corner-radius \"$r\": must be at most\
+            half the -tool-diameter, [expr {$D / 2.0}]"
     }
 }
 

@@ -83,7 +83,7 @@ namespace eval ::fivax::verify {
         }
     }
     # G codes whose meaning the checker follows; others are reported.
-    variable KnownG {0 1 2 3 4 17 18 19 20 21 40 43 43.4 49 53 53.1 54 55 56 57 58 59 68.2 69
+    variable KnownG {0 1 2 3 4 17 18 19 20 21 40 41 42 43 43.4 49 53 53.1 54 55 56 57 58 59 68.2 69
         70 71 73 76 80 81 82 83 84 85 86 87 88 89 90 93 94 98 99}
     # Canned cycles.
     variable CycleG {73 76 81 82 83 84 85 86 87 88 89}

@@ -249,6 +249,9 @@ fivax_handler MOM_start_of_program {
     set fivax(cycle) {}
     set fivax(spindleOn) 0
     set fivax(cutcomWarned) 0
+    set fivax(contactPrev) {}
+    set fivax(opContacts) 0
+    set fivax(cutcomQueue) {}
     set fivax(first) {}
     fivax_out [$fivax(out) start "[fivax_program_name] - [dict get $machine name]" \
         [fivax_program_name]]
@@ -260,6 +263,8 @@ fivax_handler MOM_start_of_path {
     fivax_out [list [$fivax(out) comment "OPERATION $mom_path_name"]]
     set fivax(opStart) 1
     set fivax(cutcomWarned) 0
+    set fivax(contactPrev) {}
+    set fivax(opContacts) 0
 }
 
 fivax_handler MOM_msys {
@@ -338,11 +343,16 @@ proc fivax_tool_length {what} {
 
 # fivax_tool_comment --
 #	Returns the text FIVAX TOOL n LENGTH L RADIUS R of tool number n of
-#	length len: R from mom_tool_diameter, left out when the CL gives none.
+#	length len: R from mom_tool_diameter, left out when the CL gives none;
+#	with -cutcom3d post the radius and CORNER radius of the cutter the
+#	program is compensated for.
 proc fivax_tool_comment {n len} {
-    global mom_tool_diameter
+    global fivax mom_tool_diameter
     set text [format "FIVAX TOOL %d LENGTH %.3f" $n $len]
-    if {[info exists mom_tool_diameter] && [string is double -strict $mom_tool_diameter]
+    if {[dict get $fivax(settings) -cutcom3d] eq "post"} {
+        lassign [lindex [fivax_cutters] 1] D r
+        append text [format " RADIUS %.3f CORNER %.3f" [expr {$D / 2.0}] $r]
+    } elseif {[info exists mom_tool_diameter] && [string is double -strict $mom_tool_diameter]
             && $mom_tool_diameter > 0} {
         append text [format " RADIUS %.3f" [expr {$mom_tool_diameter / 2.0}]]
     }
@@ -449,21 +459,69 @@ proc fivax_coolant {} {
     fivax_out [$fivax(out) coolant [expr {[info exists mom_coolant_mode] ? $mom_coolant_mode : "ON"}]]
 }
 
-# Cutter compensation: fivax writes no G41/G42 (nor Klartext RL/RR). The
-# CL files that program CUTCOM carry the tool centre path (NX "centerline
-# data", Creo OUTPUT_ON_CENTER, SolidWorks CAM's path offset by the tool
-# radius), which is posted as it is: the control's wear compensation is
-# not applied, and the operation's first CUTCOM/LEFT, RIGHT or ON says so.
+# 2D cutter compensation (CUTCOM/LEFT|RIGHT|OFF: MOM_cutcom_on/off with
+# mom_cutcom_mode, mom_cutcom_register). The CL is the tool centre path
+# (NX "centerline data", Creo OUTPUT_ON_CENTER, SolidWorks CAM's path
+# offset by the tool radius): the output layer writes G41/G42 D (Klartext
+# RL/RR) where the tool stands along the Z of the written X Y Z (3-axis,
+# 3+2) for the control's wear correction, G40 (R0) at CUTCOM/OFF, and
+# warns where it cannot (simultaneous five-axis). The planner holds moves
+# (a whole operation for its work plane), so a change waits in
+# fivax(cutcomQueue) for the first move from a later CL line (fivax_emit);
+# without CL lines (inside NX) the planner's moves go out first. The
+# operation's first CUTCOM says that the register holds the wear.
 fivax_handler MOM_cutcom_on {
-    global fivax mom_cutcom_mode
+    global fivax mom_cutcom_mode mom_cutcom_register
+    set mode [expr {[info exists mom_cutcom_mode] ? $mom_cutcom_mode : "ON"}]
+    if {$mode ni {LEFT RIGHT}} {
+        fivax_warn "CUTCOM/$mode names no side (LEFT or RIGHT): no cutter compensation written,\
+            the CL path is posted as the tool centre path"
+        return
+    }
+    set reg [lindex $fivax(tool) 0]
+    if {[info exists mom_cutcom_register] && [string is entier -strict $mom_cutcom_register]
+            && $mom_cutcom_register > 0} {
+        set reg $mom_cutcom_register
+    }
+    if {![string is entier -strict $reg]} {set reg 0}
+    fivax_cutcom $mode $reg
     if {$fivax(cutcomWarned)} return
     set fivax(cutcomWarned) 1
-    set mode [expr {[info exists mom_cutcom_mode] ? $mom_cutcom_mode : "ON"}]
-    fivax_warn "CUTCOM/$mode: fivax writes no cutter compensation (G41/G42): the CL path\
-        is posted as the tool centre path, without the control's wear compensation"
+    fivax_warn "CUTCOM/$mode: the CL path is the tool centre path, written with the control's\
+        cutter compensation (G41/G42, RL/RR) where the tool stands along Z: its register must\
+        hold the wear (actual less programmed radius), not the radius"
 }
 
-proc MOM_cutcom_off {} {}
+fivax_handler MOM_cutcom_off {fivax_cutcom OFF 0}
+
+# fivax_cutcom --
+#	Passes the compensation side (LEFT, RIGHT, OFF) with register reg to
+#	the output layer before the first move of a later CL line.
+proc fivax_cutcom {side reg} {
+    global fivax mom_cl_line
+    if {[info exists mom_cl_line]} {
+        lappend fivax(cutcomQueue) [list $mom_cl_line $side $reg]
+    } else {
+        fivax_emit [$fivax(plan) flush]
+        $fivax(out) cutcom $side $reg
+    }
+}
+
+# fivax_cutcom_due --
+#	Passes the waiting compensation changes of CL lines before src (a
+#	move's FILE:LINE; "" for a move of no CL line: none) to the output
+#	layer, all of them when src is "end".
+proc fivax_cutcom_due {src} {
+    global fivax
+    if {$src eq ""} return
+    set line [expr {$src eq "end" ? Inf : [lindex [split $src :] end]}]
+    while {[llength $fivax(cutcomQueue)]} {
+        lassign [lindex $fivax(cutcomQueue) 0] at side reg
+        if {!($at < $line)} break
+        set fivax(cutcomQueue) [lrange $fivax(cutcomQueue) 1 end]
+        $fivax(out) cutcom $side $reg
+    }
+}
 
 # The first motion of an operation. NX fires MOM_initial_move for it
 # after a tool change, else MOM_first_move ("This event occurs at the
@@ -648,6 +706,14 @@ proc fivax_arc {} {
     global mom_arc_direction mom_arc_times mom_tool_axis mom_feed_rate
     set feed [expr {[info exists mom_feed_rate] ? $mom_feed_rate : 0.0}]
     if {!($feed > 0)} {fivax_feed_zero $feed arc}
+    if {[dict get $fivax(settings) -cutcom3d] eq "post"} {
+        global mom_contact_status
+        if {[info exists mom_contact_status] && $mom_contact_status eq "ON"} {
+            fivax::Fail CUTCOM ARC "-cutcom3d post: an arc with contact data cannot be\
+                compensated: output the path as points (no CIRCLE records)"
+        }
+        set fivax(contactPrev) {}
+    }
     fivax_cutting "arc"
     set xyz {0 1 2}
     fivax_emit [$fivax(plan) arc [lmap i $xyz {set mom_prev_mcs_goto($i)}] \
@@ -698,10 +764,59 @@ proc fivax_motion {kind {point ""}} {
     if {$kind eq "feed"} {fivax_cutting "cutting move"}
     if {$point eq ""} {
         set point [list $mom_mcs_goto(0) $mom_mcs_goto(1) $mom_mcs_goto(2)]
+        if {[dict get $fivax(settings) -cutcom3d] eq "post"} {set point [fivax_cutcom3d $kind $point]}
     }
     fivax_emit [$fivax(plan) add $kind $point \
         [list $mom_tool_axis(0) $mom_tool_axis(1) $mom_tool_axis(2)] \
         $feed [fivax_where]]
+}
+
+# 3D tool-radius compensation by the post (-cutcom3d post): a cutting
+# move whose GOTO came with contact data (NX's mom_contact_status ON,
+# mom_contact_point, mom_contact_normal) goes to the planner moved for the
+# cutter in the spindle (fivax::cutcom compensate: same contact, same
+# normal); the rest of the pipeline (linearisation, limits, the block
+# check, the dry run) runs on the moved point. Rapids and moves without
+# contact data stay as programmed; an operation with none at all is
+# warned about at its end.
+
+# fivax_cutcom3d --
+#	Returns the CL point of a move of kind (rapid or feed) for the cutter
+#	in the spindle. Errors where the contact data do not fit the point,
+#	or where the surface bends concavely tighter than the cutter's corner
+#	radius between two consecutive contacts (it would gouge there).
+proc fivax_cutcom3d {kind point} {
+    global fivax mom_contact_status mom_contact_point mom_contact_normal mom_tool_axis
+    if {$kind ne "feed" || ![info exists mom_contact_status] || $mom_contact_status ne "ON"} {
+        set fivax(contactPrev) {}
+        return $point
+    }
+    set xyz {0 1 2}
+    set C [lmap i $xyz {set mom_contact_point($i)}]
+    set n [lmap i $xyz {set mom_contact_normal($i)}]
+    lassign [fivax_cutters] programmed actual
+    if {[llength $fivax(contactPrev)]} {
+        set why [fivax::cutcom fits [fivax::cutcom concaveRadius {*}$fivax(contactPrev) $C $n] \
+            {*}$actual]
+        if {$why ne ""} {
+            fivax::Fail CUTCOM GOUGE [format "-cutcom3d post: %s: it would gouge where the\
+                programmed cutter D %g r %g did not" $why {*}$programmed]
+        }
+    }
+    set fivax(contactPrev) [list $C $n]
+    incr fivax(opContacts)
+    fivax::cutcom compensate $point [lmap i $xyz {set mom_tool_axis($i)}] $C $n $programmed $actual
+}
+
+# fivax_cutters --
+#	Returns {programmed actual}, the cutters {D r} of -cutcom3d post: the
+#	CL's (TLDATA: mom_tool_diameter, mom_tool_corner1_radius) and the one
+#	in the spindle (-tool-diameter, -tool-corner-radius).
+proc fivax_cutters {} {
+    global fivax mom_tool_diameter mom_tool_corner1_radius
+    fivax::cutcom cutters [expr {[info exists mom_tool_diameter] ? $mom_tool_diameter : 0.0}] \
+        [expr {[info exists mom_tool_corner1_radius] ? $mom_tool_corner1_radius : 0.0}] \
+        [dict get $fivax(settings) -tool-diameter] [dict get $fivax(settings) -tool-corner-radius]
 }
 
 # fivax_feed_zero --
@@ -807,6 +922,7 @@ fivax_handler MOM_cycle_off {
 proc fivax_emit {moves} {
     global fivax
     foreach move $moves {
+        if {[llength $fivax(cutcomQueue)]} {fivax_cutcom_due [dict get $move src]}
         if {[dict get $move kind] eq "retract"} {
             fivax_log "retract at [dict get $move src]: [dict get $move note]"
         }
@@ -833,7 +949,12 @@ proc fivax_emit {moves} {
 fivax_handler MOM_end_of_path {
     global fivax
     fivax_settle
+    if {[dict get $fivax(settings) -cutcom3d] eq "post" && !$fivax(opContacts)} {
+        fivax_warn "-cutcom3d post: the operation has no contact data (CONTACT records):\
+            its moves are posted for the CL's cutter, not compensated"
+    }
     fivax_emit [$fivax(plan) endPath]
+    fivax_cutcom_due end
 }
 
 fivax_handler MOM_pprint {

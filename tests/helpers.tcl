@@ -302,9 +302,9 @@ proc programProblems {path machineFile {controller ""}} {
 # verifyReplayOutput --
 #	Runs tools/verify.tcl on the NC file a replay with command line args
 #	wrote (-o), against its CL file (the last word), with the replay's
-#	-machine, -msys, -table-offset, -controller, -arc-tol and -tool-length
+#	-machine, -msys, -table-offset, -controller, -arc-tol, -tool-length
 #	(verify's overrides the CL's TLDATA: give it only for CL files with
-#	none); inside
+#	none) and -cutcom3d with its cutter; inside
 #	blocks with the replay's -tol and -atol plus 0.001 of output rounding
 #	(-tol 0: not linearised, -atol 0: axis not linearised; not checked). Returns {code output}; {0 {}}
 #	when nothing was written.
@@ -325,7 +325,8 @@ proc verifyReplayOutput {argList} {
     }
     set vargs [list -quiet -machine [dict get $opts -machine] -cl $cl]
     if {[dict exists $opts -msys]} {lappend vargs -msys}
-    foreach key {-table-offset -controller -arc-tol -tool-length -dryrun} {
+    foreach key {-table-offset -controller -arc-tol -tool-length -dryrun -cutcom3d -tool-diameter
+            -tool-corner-radius} {
         if {[dict exists $opts $key]} {lappend vargs $key [dict get $opts $key]}
     }
     # inside blocks: the replay's tolerances (0: not linearised) plus

@@ -4,7 +4,9 @@
 #	distances across, points at equal distances along, lead and tilt
 #	angles in the local frame of the feed direction (kinematics.md
 #	section 11), the tool tip as the CL point. Writes an NX-style CLSF
-#	(TOOL PATH, TLDATA/MILL, FEDRAT, GOTO x,y,z,i,j,k, END-OF-PATH) that
+#	(TOOL PATH, TLDATA/MILL, FEDRAT, GOTO x,y,z,i,j,k, END-OF-PATH; with
+#	-contact a CONTACT record of contact point and normal before each
+#	cutting GOTO) that
 #	replays through the post. Surfaces: paper, plane, cylinder, sphere or
 #	a file of three expressions in u and v ("x = ...", "y = ...",
 #	"z = ...": numbers, u, v, pi, + - * / **, parentheses and math
@@ -38,6 +40,7 @@ namespace eval ::surfpath {
         {-clearance {real min 0} 10 MM "approach, lift and retract distance along the tool axis"}
         {-op word SURFACE_PATH NAME "operation name"}
         {-check bool 0 "" "check every CL point for contact and gouging and print the margins"}
+        {-contact bool 0 "" "write the contact data: each cutting GOTO preceded by CONTACT/x,y,z,i,j,k (contact point, surface normal), for -cutcom3d post"}
         {-svg text {} FILE "also draw the path: XY, XZ, YZ projections of the tips with tool-axis whiskers"}
         {-o text {} FILE "output CLSF (required)"}
         {-help bool 0 "" "print this help"}
@@ -91,7 +94,7 @@ proc ::surfpath::main {argv} {
             incr n [llength $pass]
         }
         set lines [::fivax::toolpath clsf [concat {*}$passes] -op ${-op} -D ${-D} -r ${-r} \
-            -length ${-length} -rpm ${-rpm} -feed ${-feed} -clearance ${-clearance} -breaks $breaks]
+            -length ${-length} -rpm ${-rpm} -feed ${-feed} -clearance ${-clearance} -breaks $breaks -contact ${-contact}]
         ::fivax::nctool writeLines ${-o} $lines
     } trap {FIVAX} {msg} {
         ::fivax::nctool die "surfpath: $msg"

@@ -45,6 +45,9 @@ namespace eval ::verifytool {
         {-tool-length {maybe real} {} MM "tool length of every tool the CL (-cl) gives none (a CL TLDATA wins, as in the post; default: each tool's from -tools, else the program's FIVAX TOOL comments, else the machine's tool_length)"}
         {-table-offset {maybe vec3} {} "X Y Z" "workpiece-frame position of the table reference point"}
         {-arc-tol {real gt 0} 0.002 MM "chord tolerance of CL arcs (the post's -arc-tol)"}
+        {-cutcom3d {enum off post} off MODE "the program was posted with -cutcom3d post: the CL's cutting points with contact data (-cl) are moved for the cutter -tool-diameter, -tool-corner-radius as the post moved them"}
+        {-tool-diameter {maybe real gt 0} {} MM "diameter of the cutter of -cutcom3d post"}
+        {-tool-corner-radius {maybe real min 0} {} MM "corner radius of the cutter of -cutcom3d post (default: the CL cutter's)"}
         {-window {int min 1} 32 N "CL segments searched ahead of the last match"}
         {-dryrun {enum on off} on WHEN "machine dry run: spindle, rapids and bodies through the stock, length compensation, modes, tool lengths, program end"}
         {-stock {maybe reals 6} {} "X0 Y0 Z0 X1 Y1 Z1"
@@ -69,6 +72,11 @@ proc ::verifytool::ParseArgs {argv} {
     lassign [::fivax::nctool args $Options $argv verify \
         "tclsh tools/verify.tcl -machine M.tcl ?options? part.nc" \
         "Checks an NC program by forward kinematics." 1 -machine] opts rest
+    try {
+        ::fivax::settings cutter $opts verify
+    } trap {FIVAX OPTION} {msg} {
+        ::fivax::nctool die $msg
+    }
     list $opts [lindex $rest 0]
 }
 
@@ -104,12 +112,17 @@ proc ::verifytool::Run {opts path machine tools} {
         opIndex -1 clPoints {} clLength "" length "" cursor 0 prev {} cutU "" breakU "" rows {} \
         warnings {} tooling [::fivax::dryrun tooling $tools [dict get $opts -tool-length]] \
         names [lmap a [dict get $machine chain] {dict get $a name}] \
-        rollover [lmap a [dict get $machine chain] {dict get $a rollover}] cl {}]
+        rollover [lmap a [dict get $machine chain] {dict get $a rollover}] cl {} \
+        cutcom 0 cutcomBlocks 0]
     set S(checker) [::fivax::verify create $machine -table-offset [dict get $opts -table-offset] \
         -controller [dict get $opts -controller]]
     if {[dict get $opts -cl] ne ""} {
+        set cutter {}
+        if {[dict get $opts -cutcom3d] eq "post"} {
+            set cutter [list [dict get $opts -tool-diameter] [dict get $opts -tool-corner-radius]]
+        }
         set S(cl) [::fivax::clpath read [dict get $opts -cl] [dict get $opts -msys] \
-            [dict get $opts -arc-tol] [dict get $machine units]]
+            [dict get $opts -arc-tol] [dict get $machine units] $cutter]
     }
     SetLength
     set lineNo 0
@@ -150,6 +163,7 @@ proc ::verifytool::Line {line where n} {
     foreach c [dict get $blk comments] {
         if {[regexp {^\s*OPERATION\s+(.*?)\s*$} $c -> name]} {StartOp $name}
     }
+    Cutcom $line $blk
     set S(tooling) [::fivax::dryrun toolStep $S(tooling) $blk]
     foreach note [dict get $S(tooling) notes] {
         lassign $note kind what
@@ -197,7 +211,7 @@ proc ::verifytool::Line {line where n} {
         set S(prev) {}
         set figures [Cutting $blk $joints $P $t $where Bottom]
         lappend S(rows) [list $n [dict get $S(op) name] 1 $joints $P $t {*}$figures \
-            [dict get $blk F] [dict get $blk mode] $S(length)]
+            [dict get $blk F] [dict get $blk mode] $S(length) [Cutter]]
         return
     }
     if {$motion in {1 2 3}} {
@@ -206,7 +220,7 @@ proc ::verifytool::Line {line where n} {
         set S(endU) [Place $P $t]
     }
     lappend S(rows) [list $n [dict get $S(op) name] $motion $joints $P $t {*}$figures \
-        [dict get $blk F] [dict get $blk mode] $S(length)]
+        [dict get $blk F] [dict get $blk mode] $S(length) [Cutter]]
     set S(prev) [list $joints $P $t $S(endU)]
 }
 
@@ -245,6 +259,34 @@ proc ::verifytool::SetLength {} {
     if {$S(length) ne "" && $len == $S(length)} return
     set S(length) $len
     $S(checker) setTool $len
+}
+
+# ::verifytool::Cutcom --
+#	Follows 2D cutter radius compensation (G41/G42 on, G40 off; Klartext
+#	RL/RR, R0) through the NC line and its read block blk, counting the
+#	motion blocks under it: they are back-plotted as programmed (the
+#	path the CL gives), while the control offsets them by the radius in
+#	its register (the post's programs: the wear).
+proc ::verifytool::Cutcom {line blk} {
+    variable S
+    foreach {letter v} [dict get $blk words] {
+        if {$letter eq "G" && $v in {40 41 42}} {set S(cutcom) [expr {$v != 40}]}
+    }
+    # (Klartext: the radius word of an L or C block)
+    if {[regexp {^\s*\d+\s+[LC]\M.*\mR([0LR])(\s|$)} $line -> side]} {
+        set S(cutcom) [expr {$side ne "0"}]
+    }
+    if {$S(cutcom) && [llength [dict get $blk moved]]} {incr S(cutcomBlocks)}
+}
+
+# ::verifytool::Cutter --
+#	Returns {D r}, the cutter of a program compensated for it (its FIVAX
+#	TOOL comment gives RADIUS and CORNER: -cutcom3d post), else "".
+proc ::verifytool::Cutter {} {
+    variable S
+    set corner [dict get $S(tooling) corner]
+    if {$corner eq ""} {return ""}
+    list [expr {2.0 * [dict get $S(tooling) radius]}] $corner
 }
 
 # ::verifytool::Warn --
@@ -633,7 +675,8 @@ proc ::verifytool::Csv {path rows names} {
 
 # ::verifytool::Clsf --
 #	Writes the back-plotted path as a CLSF to path: one operation per NC
-#	operation (TLDATA: the tool length of its first block), RAPID before
+#	operation (TLDATA: the tool length of its first block, and the cutter
+#	a compensated program was run for, else diameter 0), RAPID before
 #	G0 points, FEDRAT when the tip feed changes.
 proc ::verifytool::Clsf {path rows} {
     set lines {}
@@ -642,11 +685,13 @@ proc ::verifytool::Clsf {path rows} {
     set lastFeed ""
     set prevP {}
     foreach row $rows {
-        lassign $row - name motion joints P t - - - - F mode tool
+        lassign $row - name motion joints P t - - - - F mode tool cutter
         if {$name ne $op} {
             if {$op ne ""} {lappend lines END-OF-PATH}
+            lassign [expr {[llength $cutter] ? $cutter : {0 0}}] D r
             lappend lines "TOOL PATH/[regsub -all {[^A-Za-z0-9_.-]} $name _],TOOL,BACKPLOT" \
-                "TLDATA/MILL,0.0000,0.0000,[::fivax::num::fixed $tool 4],0.0000,0.0000"
+                [format "TLDATA/MILL,%s,%s,%s,0.0000,0.0000" [::fivax::num::fixed $D 4] \
+                    [::fivax::num::fixed $r 4] [::fivax::num::fixed $tool 4]]
             set op $name
             set last ""
             set lastFeed ""
@@ -730,6 +775,11 @@ proc ::verifytool::main {argv} {
         ::fivax::nctool die "verify: $msg"
     }
     Say $opts "verify: [file tail $path] on [dict get $machine name] ([dict get $opts -machine])"
+    if {$::verifytool::S(cutcomBlocks)} {
+        puts stderr "verify: note: $::verifytool::S(cutcomBlocks) motion blocks under cutter radius\
+            compensation (G41/G42, RL/RR) are back-plotted as programmed: the control offsets\
+            them by the radius in its register"
+    }
     Report $opts $ops $names [expr {[dict get $opts -cl] ne ""}]
     dict for {kind n} $warnings {
         lappend problems "$n words of kind '$kind' not understood (a program it cannot read is not verified)"

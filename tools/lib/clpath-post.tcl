@@ -8,7 +8,9 @@
 #
 #	Globals set by the caller: clpath_msys (1: map points through the
 #	CLSF's MSYS frame), clpath_tol (chord tolerance of arcs and NURBS),
-#	mom_kin_output_unit (MM or IN: the unit of the points).
+#	mom_kin_output_unit (MM or IN: the unit of the points), clpath_cutter
+#	({D r}: cutting points with contact data moved for that cutter, "":
+#	as written).
 #	Result: clpath_ops, a list of {name NAME length L points {{P t src rapid} ...}
 #	msysTurns 0|1} (msysTurns: the operation's MSYS record turns its MCS
 #	in the absolute frame, so a program posted with -msys is read with it).
@@ -47,6 +49,21 @@ proc clpath_point {rapid {P ""}} {
         "$::mom_cl_file:$::mom_cl_line" $rapid]
 }
 
+# clpath_cut --
+#	A cutting move to mom_mcs_goto: its point, moved for clpath_cutter
+#	when the move has contact data (mom_contact_status ON).
+proc clpath_cut {} {
+    set P [clpath_vec mom_mcs_goto]
+    if {[llength $::clpath_cutter] && [info exists ::mom_contact_status]
+            && $::mom_contact_status eq "ON"} {
+        set cutters [fivax::cutcom cutters $::mom_tool_diameter $::mom_tool_corner1_radius \
+            {*}$::clpath_cutter]
+        set P [fivax::cutcom compensate $P [clpath_vec mom_tool_axis] \
+            [clpath_vec mom_contact_point] [clpath_vec mom_contact_normal] {*}$cutters]
+    }
+    clpath_point 0 $P
+}
+
 # clpath_open -- Starts the operation name (closing the open one).
 proc clpath_open {name} {
     clpath_close
@@ -83,7 +100,7 @@ proc MOM_msys {} {
 proc MOM_initial_move {} clpath_first
 proc MOM_first_move {} clpath_first
 proc MOM_rapid_move {} {clpath_point 1}
-proc MOM_linear_move {} {clpath_point 0}
+proc MOM_linear_move {} clpath_cut
 proc MOM_from_move {} {clpath_point 1}
 proc MOM_gohome_move {} {clpath_point 1}
 
@@ -121,7 +138,9 @@ proc clpath_first {} {
             clpath_point 0 [lmap j {0 1 2} {set ::mom_nurbs_points(0,$j)}]
             MOM_nurbs_move
         }
-        default {clpath_point [expr {$::mom_motion_type ne "CUT"}]}
+        default {
+            if {$::mom_motion_type eq "CUT"} clpath_cut else {clpath_point 1}
+        }
     }
 }
 

@@ -23,13 +23,15 @@ namespace eval ::fivax::clpath {
 #	clpath-post.tcl: lengths in unit (mm or inch, as the machine's),
 #	arcs and NURBS as points within arcTol, cycle holes as R plane,
 #	bottom and retract points; with msys 1 the points are mapped through
-#	the file's MSYS frame (as replay -msys does).
-#	Errors: those of fivax::clsf and fivax::mom.
-proc ::fivax::clpath::read {path {msys 0} {arcTol 0.002} {unit mm}} {
+#	the file's MSYS frame (as replay -msys does); with cutter {D r} (not
+#	"") the cutting points with contact data are moved for that cutter,
+#	as replay -cutcom3d post moves them (fivax::cutcom compensate).
+#	Errors: those of fivax::clsf, fivax::mom and fivax::cutcom.
+proc ::fivax::clpath::read {path {msys 0} {arcTol 0.002} {unit mm} {cutter {}}} {
     variable postFile
     set rt [::fivax::mom::create -post $postFile -listing ::fivax::clpath::Ignore \
         -autopath $::auto_path -globals [list clpath_msys $msys clpath_tol $arcTol \
-        mom_kin_output_unit [expr {$unit eq "inch" ? "IN" : "MM"}]]]
+        clpath_cutter $cutter mom_kin_output_unit [expr {$unit eq "inch" ? "IN" : "MM"}]]]
     try {
         $rt run $path
         [$rt interp] eval {set ::clpath_ops}

@@ -248,7 +248,8 @@ proc ::fivax::toolpath::sweep {args} {
 
 # ::fivax::toolpath::clsf --
 #	Returns the lines (no newlines) of an NX-style CLSF operation that cuts
-#	through the CL points {P t}. Options (mm, mm/min):
+#	through the CL points {P t} (or {P t C n}: contact data). Options
+#	(mm, mm/min):
 #	  -op VARIABLE_CONTOUR -tool <D..R..> -number 1
 #	  -D 16 -r 4 -length 75        TLDATA/MILL values
 #	  -rpm 8000 -feed 1000         SPINDL/RPM (clockwise), FEDRAT/MMPM
@@ -256,6 +257,9 @@ proc ::fivax::toolpath::sweep {args} {
 #	  -breaks {}                   indices of points that start a new pass:
 #	                               before each, a retract GOTO along the
 #	                               axis, RAPID, approach GOTO and FEDRAT
+#	  -contact 0                   1: a CONTACT/x,y,z,i,j,k record (contact
+#	                               point, surface normal) before each
+#	                               point's GOTO (points {P t C n})
 #	Record order: TOOL PATH, TLDATA, MSYS (identity), $$ centerline data,
 #	LOAD/TOOL, SPINDL, COOLNT/ON, RAPID + GOTO approach, FEDRAT, one GOTO per
 #	point, retract GOTO, COOLNT/OFF, END-OF-PATH. Lengths have 4 decimals,
@@ -270,23 +274,27 @@ proc ::fivax::toolpath::clsf {points args} {
         {-rpm real 8000 RPM "spindle speed"} {-feed real 1000 MMPM "feed"}
         {-clearance real 50 MM "approach distance"}
         {-breaks any {} "I ..." "indices of the points that start a new pass (lift between passes)"}
+        {-contact bool 0 "" "write each point's contact point and surface normal (CONTACT record before its GOTO; points {P t C n})"}
     } $args clsf]
     dict with o {}
     CheckTool ${-D} ${-r}
     if {![llength $points]} {
         ::fivax::Fail TOOLPATH EMPTY "no CL points to write"
     }
+    set want [expr {${-contact} ? 4 : 2}]
     set points [lmap pt $points {
-        if {[llength $pt] != 2} {
-            ::fivax::Fail TOOLPATH VALUE "CL point must be {P t}, got \"$pt\""
+        if {[llength $pt] != $want && [llength $pt] != 4} {
+            ::fivax::Fail TOOLPATH VALUE "CL point must be\
+                [expr {${-contact} ? "{P t C n}" : "{P t} or {P t C n}"}], got \"$pt\""
         }
-        lassign $pt p0 t0
+        lassign $pt p0 t0 c0 n0
         set p [CheckVec point $p0]
-        set t [CheckVec axis $t0]
-        if {abs([::fivax::vec norm $t] - 1.0) > 1e-6} {
-            ::fivax::Fail TOOLPATH AXIS "tool axis is not a unit vector: $t0"
+        set t [CheckUnit "tool axis" $t0]
+        if {${-contact}} {
+            list $p $t [CheckVec "contact point" $c0] [CheckUnit "surface normal" $n0]
+        } else {
+            list $p $t
         }
-        list $p $t
     }]
     if {${-tool} eq ""} {
         set -tool [format MILL_D%s_R%s [Short ${-D}] [Short ${-r}]]
@@ -313,6 +321,7 @@ proc ::fivax::toolpath::clsf {points args} {
                 [goto [::fivax::vec add $p [::fivax::vec scale ${-clearance} $t]] $t lastAxis] \
                 "FEDRAT/MMPM,[::fivax::num::fixed ${-feed} 4]"
         }
+        if {${-contact}} {lappend lines [Contact {*}[lrange $pt 2 3]]}
         lappend lines [goto $p $t lastAxis]
         set pp $p
         set pt0 $t
@@ -337,6 +346,25 @@ proc ::fivax::toolpath::goto {p t lastVar} {
         set last $axis
     }
     return $line
+}
+
+# ::fivax::toolpath::Contact --
+#	Returns the CONTACT line of contact point c and unit surface normal n
+#	(the contact data of the GOTO after it: lib/clsf.tcl ParseContact).
+proc ::fivax::toolpath::Contact {c n} {
+    set nums [concat [lmap x $c {::fivax::num::fixed $x 4}] [lmap x $n {::fivax::num::fixed $x 7}]]
+    return "CONTACT/[join $nums ,]"
+}
+
+# ::fivax::toolpath::CheckUnit --
+#	Returns v as 3 doubles (CheckVec); raises AXIS unless its length is 1
+#	within 1e-6 (name names it).
+proc ::fivax::toolpath::CheckUnit {name v} {
+    set u [CheckVec $name $v]
+    if {abs([::fivax::vec norm $u] - 1.0) > 1e-6} {
+        ::fivax::Fail TOOLPATH AXIS "$name is not a unit vector: $v"
+    }
+    return $u
 }
 
 # ::fivax::toolpath::Short --
@@ -487,7 +515,8 @@ proc ::fivax::toolpath::frame {surf u v} {
 # ::fivax::toolpath::passes --
 #	Returns the passes of a parallel (zig-zag) tool path on surface surf
 #	for a toroidal cutter: a list of passes, each a list of CL points
-#	{P t} (tool tip, unit axis) cut with torusCL. Options (mm, degrees):
+#	{P t C n} (tool tip, unit axis, cut with torusCL, and the contact
+#	point and unit surface normal there). Options (mm, degrees):
 #	  -D 6 -r 2            cutter diameter and corner radius
 #	  -lead 25 -tilt 5     lead and tilt angles
 #	  -stepover 1          distance between passes (arc length across)
@@ -525,7 +554,7 @@ proc ::fivax::toolpath::passes {surf args} {
             # the feed tangent, made exactly orthogonal to n
             set d [::fivax::vec sub $d [::fivax::vec scale [::fivax::vec dot $d $n] $n]]
             set tau [::fivax::vec scale $dir [::fivax::vec unit $d]]
-            lappend pass [torusCL $S $n $tau ${-D} ${-r} $beta $theta]
+            lappend pass [list {*}[torusCL $S $n $tau ${-D} ${-r} $beta $theta] $S $n]
         }
         lappend out $pass
         incr k
