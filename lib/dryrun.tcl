@@ -12,7 +12,7 @@
 #	    rapid       a rapid whose cutter passes below the stock's surface
 #	    collision   shank, holder or spindle nose through the stock, or a
 #	                body below the table's top
-#	    lengthcomp  G43 / G43.4 with H in a block with no move along Z
+#	    lengthcomp  G43 / TCP (G43.4, the reader's tcpG) with H in a block with no move along Z
 #	    mode        TCP or a work plane switched with the tool at cutting
 #	                depth (tip below the stock's top, less than depthClear
 #	                above its surface)
@@ -109,7 +109,8 @@ proc ::fivax::dryrun::run {machine lines args} {
     set controller [dict get $opts -controller]
     if {$controller eq ""} {set controller [dict get $machine controller]}
     array set R [list machine $machine opts $opts events {} moves {} \
-        klartext [expr {$controller eq "heidenhain"}] units [dict get $machine units] \
+        klartext [expr {[dict get [::fivax::dialect writer $controller -controller] syntax] eq "klartext"}] \
+        tcpG [dict get [::fivax::dialect reader $controller -controller] tcpG] units [dict get $machine units] \
         offset "" length [dict get $machine tool_length] radius 0.0 \
         comp 0 spindle 0 speed "" coolant 0 spindleSaid 0 end 0 endSaid 0 \
         pose "" joints "" space joint model "" progress $progress \
@@ -355,7 +356,9 @@ proc ::fivax::dryrun::Words {words moved n} {
                 if {$v == 20 || $v == 70} {set R(units) inch}
                 if {$v == 21 || $v == 71} {set R(units) mm}
                 if {$v >= 54 && $v <= 59 && $v == round($v)} {set R(offset) [expr {int($v)}]}
-                if {$v == 43 || $v == 43.4} {set on G[expr {$v == 43 ? 43 : 43.4}]}
+                if {$v == 43 || [lsearch -exact -real $R(tcpG) $v] >= 0} {
+                    set on G[expr {$v == 43 ? 43 : $v}]
+                }
                 if {$v == 49} {set R(comp) 0}
             }
             H {set h 1}

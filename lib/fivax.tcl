@@ -9,7 +9,7 @@
 #	    machine kin        machine files, kinematics
 #	    curve cutcom plane motion/  CL path geometry, 3D cutter compensation,
 #	                       work-plane frames, the planner
-#	    nc output          blocks, the dialect output layer
+#	    nc dialect output  blocks, the controllers (lib/dialect/), the output layer
 #	    verify dryrun      checking written blocks, the machine dry run
 #	    settings           the option table of a posting job
 
@@ -32,7 +32,7 @@ foreach ::fivax::File {
     machine.tcl kin.tcl
     curve.tcl cutcom.tcl plane.tcl motion/plan.tcl motion/candidates.tcl motion/moves.tcl
     motion/linearise.tcl motion/feeds.tcl motion/holes.tcl motion/frames.tcl
-    nc.tcl output.tcl
+    nc.tcl dialect.tcl output.tcl
     verify.tcl dryrun.tcl
     settings.tcl
 } {

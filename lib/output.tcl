@@ -15,10 +15,10 @@
 #	file's 'output' keys and the options below override decimals and
 #	numbering.
 #
-#	Dialects are data (the Dialects table): what differs between
-#	controllers is looked up there, not written as a copy of the code.
-#	Two syntaxes read the table: ISO G-code (fanuc, sinumerik, linuxcnc)
-#	and Heidenhain Klartext (heidenhain: numbered lines from 0, L/CC/C
+#	Dialects are data (each controller's writer table, one file per
+#	controller in lib/dialect/): what differs between controllers is
+#	looked up there, not written as a copy of the code. Two syntaxes read
+#	the table: ISO G-code and Klartext (numbered lines from 0, L/CC/C
 #	blocks, signed words, no G codes). ../shared/spec/dialects.md gives
 #	what each control must receive.
 #	Errors: {FIVAX OPTION ...}, {FIVAX OUTPUT <DETAIL>}.
@@ -29,7 +29,7 @@ namespace eval ::fivax::output {
 
     variable Options {
         {-def any {} DICT "the post's .def as read by fivax::def (required)"}
-        {-controller {enum fanuc sinumerik heidenhain linuxcnc} fanuc NAME "controller dialect"}
+        {-controller {maybe enum} {} NAME "controller dialect (default: the machine's)"}
         {-tcp bool 0 "" "TCP mode: X Y Z are the tool tip in the workpiece frame, the control keeps the tip on the path"}
         {-decimals {maybe int min 0 max 9} {} N "decimals of X Y Z (default: the .def's)"}
         {-angle-decimals {maybe int min 0 max 9} {} N "decimals of the rotary axes (default: the .def's)"}
@@ -46,19 +46,23 @@ namespace eval ::fivax::output {
             "INSERT text: written when it reads as NC words of the dialect, else as a comment with a warning (checked), or as it is (verbatim)"}
         {-warn any {} CMD "command prefix called with each warning (a MIN/MAX Warning of the .def, INSERT text not written)"}
     }
+    # (the controllers are those of lib/dialect/)
+    lset Options [lsearch -index 0 $Options -controller] 1 [list maybe enum {*}[::fivax::dialect names]]
     # The addresses this layer writes: every one must be in the .def.
     variable Addresses {G_motion G_feed G_plane G_mode G_units G_length G_cycle
         G_cutcom G_wcs G_machine G_return G_dwell X Y Z R Q P_ms P_s fourth_axis fifth_axis F F_inv S T H
         M_spindle M_coolant M I J K G_rot G_tilt E_i E_j E_k D F_dwell
         KX KY KZ K4 K5 KF KCX KCY KCZ SPA SPB SPC N}
 
-    # Per dialect:
+    # The writer table of each controller (lib/dialect/<name>.tcl, see
+    # lib/dialect.tcl) has the keys:
     #   syntax     gcode or klartext
     #   program    the program-number line format ("" for none: the program
     #              comment stands alone, "(PROGRAM n)" when empty)
     #   percent    1: % lines open and close the program
     #   comment    the comment form: paren "(text)", semicolon "; text"
     #              (G-code), or numbered "n ; text" (Klartext)
+    #   semicolon  1: ";" starts a comment to the end of the line
     #   safety     the words of the safety line ({} none)
     #   reset      the lines after it that cancel a work plane and TCP a
     #              previous program may have left on
@@ -70,8 +74,9 @@ namespace eval ::fivax::output {
     #   machineZ   Z up in machine coordinates: G53 (G0 G49 G53 Z), SUPA
     #              (G0 SUPA Z D0), M91 (L Z R0 FMAX M91)
     #   inverse    1: inverse-time feed (G93) exists
-    #   tcp        {on LINES off LINES} of TCP mode: G43.4 (Fanuc: on the
-    #              first X Y Z block after a tool change, with H), else the
+    #   tcp        {on LINES off LINES} of TCP mode: one G code (Fanuc's
+    #              G43.4: on the first X Y Z block after a tool change,
+    #              with H), else the
     #              lines written before that block; off: the lines before
     #              the Z up (Fanuc's G49 alone: the Z up then carries no
     #              G49 of its own); {} when the control has
@@ -98,61 +103,6 @@ namespace eval ::fivax::output {
     #              none (LinuxCNC 2.9: its G41/G42 offset by the tool
     #              table's diameter, twice the radius on a tool centre
     #              path, and its interpreter refuses such a program)
-    variable Dialects {
-        fanuc {
-            syntax gcode program O%04d percent 1 comment paren
-            safety {G_cutcom 40 G_length 49 G_cycle 80} reset {G69} units {21 20}
-            length G43 machineZ G53 inverse 1
-            tcp {on G43.4 off G49} plane g68.2 arcs {planes {17 18 19} helix 1}
-            dwell P_ms
-            cycles {drill 81 drill_dwell 82 drill_deep 83 drill_break_chip 73 tap 84
-                bore 85 bore_drag 86 bore_no_drag 76 bore_back 87 bore_manual 88 bore_dwell 89}
-            letters {G M F S T H D P Q R I J K L}
-            active {}
-            ends {{2 30 99} {%}}
-            cutcom GD
-        }
-        sinumerik {
-            syntax gcode program {} percent 0 comment semicolon
-            safety {G_cutcom 40} reset {TRAFOOF CYCLE800()} units {71 70}
-            length D machineZ SUPA inverse 1
-            tcp {on {TRAORI ORIWKS ORIAXES} off {TRAFOOF}} plane cycle800
-            arcs {planes {17 18 19} helix 1}
-            dwell F_dwell
-            cycles {}
-            letters {G M F S T D P Q R I J K L}
-            active {}
-            ends {{2 17 30} {{\mRET\M}}}
-            cutcom G
-        }
-        heidenhain {
-            syntax klartext program {} percent 0 comment numbered
-            safety {} reset {{FUNCTION RESET TCPM} {PLANE RESET STAY}} units {MM INCH}
-            length call machineZ M91 inverse 0
-            tcp {on {{FUNCTION TCPM F TCP AXIS POS PATHCTRL AXIS}} off {{FUNCTION RESET TCPM}}}
-            plane spatial arcs {planes {17} helix 0}
-            dwell cycl9
-            cycles {}
-            letters {}
-            active {}
-            ends {{2 30} {{\mEND\s+PGM\M}}}
-            cutcom R
-        }
-        linuxcnc {
-            syntax gcode program {} percent 1 comment paren
-            safety {G_cutcom 40 G_length 49 G_cycle 80} reset {} units {21 20}
-            length G43 machineZ G53 inverse 1
-            tcp {} plane {} arcs {planes {17 18 19} helix 1}
-            dwell P_s
-            cycles {drill 81 drill_dwell 82 drill_deep 83 drill_break_chip 73 tap 84
-                bore 85 bore_drag 86 bore_back 87 bore_manual 88 bore_dwell 89}
-            letters {G M F S T H D P Q R I J K L}
-            active {MSG DEBUG PRINT LOG LOGOPEN LOGAPPEND LOGCLOSE PROBEOPEN PROBECLOSE
-                ABORT PY PYRUN PYRELOAD}
-            ends {{2 30 99} {%}}
-            cutcom {}
-        }
-    }
     # The angle convention of each work-plane form (see lib/plane.tcl).
     variable PlaneAngles {g68.2 zxz cycle800 xyz spatial spatial}
     # The G and M codes the layer writes, by the name Post Builder posts
@@ -203,7 +153,7 @@ proc ::fivax::output::create {machine args} {
     if {![dict size [dict get $opts -def]]} {
         ::fivax::Fail OPTION MISSING "output create: -def (the post's .def) is required"
     }
-    set dialect [dict get $::fivax::output::Dialects [dict get $opts -controller]]
+    set dialect [::fivax::dialect writer [dict get $opts -controller]]
     if {[dict get $opts -tcp] && ![llength [dict get $dialect tcp]]
             && ![llength [dict get $machine tcp_codes]]} {
         ::fivax::Fail OUTPUT VALUE "$src: TCP mode on [dict get $opts -controller]: the control\
@@ -226,7 +176,7 @@ proc ::fivax::output::create {machine args} {
 proc ::fivax::output::sysVars {machine {controller ""}} {
     set fromMachine [MachineController $machine]
     if {$controller eq ""} {set controller $fromMachine}
-    set klartext [expr {[dict get $::fivax::output::Dialects $controller syntax] eq "klartext"}]
+    set klartext [expr {[dict get [::fivax::dialect writer $controller] syntax] eq "klartext"}]
     set vars {}
     dict for {name leader} [Leaders $machine $klartext] {
         lappend vars mom_sys_leader($name) $leader
@@ -239,14 +189,14 @@ proc ::fivax::output::sysVars {machine {controller ""}} {
 
 # ::fivax::output::MachineController --
 #	Returns the dialect named by machine's controller key.
-#	Errors: {FIVAX OUTPUT VALUE} "<file>: controller: unknown dialect ..."
+#	Errors: {FIVAX OUTPUT VALUE} "<file>: controller: unknown controller ..."
 proc ::fivax::output::MachineController {machine} {
     set controller [dict get $machine controller]
-    if {![dict exists $::fivax::output::Dialects $controller]} {
-        ::fivax::Fail OUTPUT VALUE "[dict get $machine file]: controller: unknown dialect\
-            '$controller': must be [join [dict keys $::fivax::output::Dialects] {, }]"
+    try {
+        ::fivax::dialect check $controller "[dict get $machine file]: controller"
+    } trap {FIVAX OPTION} {msg} {
+        ::fivax::Fail OUTPUT VALUE $msg
     }
-    return $controller
 }
 
 # ::fivax::output::Leaders --
@@ -297,7 +247,7 @@ oo::class create ::fivax::output::Writer {
     # and, for the per-point path, S(moveCodes) (the G codes of rapid and
     # feed moves, G-code syntax), S(klartext) (the dialect's
     # syntax is Klartext), S(tcpInBlock) (TCP comes on inside a motion
-    # block: Fanuc G43.4 H), S(xyzAddr) {X addr Y addr Z addr} and
+    # block with H: the G code S(tcpG), Fanuc 43.4), S(xyzAddr) {X addr Y addr Z addr} and
     # S(rotAddr) {name addr step ...} (the rotaries in the order of their
     # words, see AxisAddresses; step:
     # the output resolution in degrees a rotary that rolls over is rounded
@@ -308,7 +258,7 @@ oo::class create ::fivax::output::Writer {
     constructor {aMachine opts} {
         set S(machine) $aMachine
         set S(cfg) $opts
-        set S(dialect) [dict get $::fivax::output::Dialects [dict get $S(cfg) -controller]]
+        set S(dialect) [::fivax::dialect writer [dict get $S(cfg) -controller]]
         set names [::fivax::machine::rotaryNames $S(machine)]
         set i 0
         foreach axis [dict get $S(machine) chain] {
@@ -342,7 +292,8 @@ oo::class create ::fivax::output::Writer {
             set S(moveCodes) [list [my Code rapid_code] [my Code linear_code]]
         }
         set tcp [dict get $S(dialect) tcp]
-        set S(tcpInBlock) [expr {$tcp ne "" && [dict get $tcp on] eq "G43.4"}]
+        # (a single G code, as Fanuc's G43.4: written with H in the block)
+        set S(tcpInBlock) [expr {$tcp ne "" && [regexp {^G([0-9.]+)$} [dict get $tcp on] -> S(tcpG)]}]
         set S(nc) [::fivax::nc::create -sequence 0 -warn [dict get $S(cfg) -warn]]
         my Define [dict get $S(cfg) -def]
         my AxisAddresses [dict get $S(cfg) -def]
@@ -798,7 +749,7 @@ oo::class create ::fivax::output::Writer {
     method ProgramEnd {text} {
         lassign [dict get $S(dialect) ends] codes patterns
         set code [string toupper [regsub -all {\([^()]*\)} $text " "]]
-        if {[dict get $S(cfg) -controller] ne "fanuc"} {regsub {;.*$} $code "" code}
+        if {[dict get $S(dialect) semicolon]} {regsub {;.*$} $code "" code}
         foreach {- n} [regexp -all -inline {(?:^|[^A-Z0-9_.])M\s*0*(\d+)(?![\d.])} $code] {
             if {$n in $codes} {return M$n}
         }
@@ -880,7 +831,7 @@ oo::class create ::fivax::output::Writer {
         if {$S(tcpArmed) && $S(tcpInBlock) && "Z" in $write} {
             # TCP on (Fanuc): G43.4 H with the first Z block (the
             # approach's X Y Z, see ::fivax::motion First)
-            lappend words G_length 43.4 H $S(length)
+            lappend words G_length $S(tcpG) H $S(length)
             set S(length) 0
             set S(tcpArmed) 0
             set S(tcpOn) 1

@@ -34,7 +34,7 @@ namespace eval ::fivax::settings {
 #	the output layer: its resolution and what it writes).
 proc ::fivax::settings::table {} {
     variable Job
-    set controllers [dict keys $::fivax::output::Dialects]
+    set controllers [::fivax::dialect names]
     concat [lrange $Job 0 0] \
         [list [list -controller [list maybe enum {*}$controllers] {} NAME \
             "controller dialect: [join $controllers {, }] (default: the machine's)"]] \

@@ -15,9 +15,10 @@
 #	chose the blocks: it depends on kin and the machine's limits only.
 #
 #	Dialects: the text of a block is turned into address words by the
-#	Dialects table below (comments, lines that are no blocks, the word
-#	pattern); what the words mean is the ISO meaning common to fanuc,
-#	sinumerik and linuxcnc (G0 G1 G2 G3 G93 G94, X Y Z, the machine's
+#	controller's reader table (lib/dialect/: comments, lines that are no
+#	blocks, the word pattern; a controller without a file is an error);
+#	what the words mean is the ISO meaning common to the G-code controls
+#	(G0 G1 G2 G3 G93 G94, X Y Z, the machine's
 #	rotary letters, F), with the canned cycles (G73 G76 G81..G89 with
 #	G98/G99 and R: the tool goes to X Y, down to Z, and back to the
 #	initial level or the R plane; G80 or a motion code ends them) and G53
@@ -27,7 +28,7 @@
 #	SPATIAL, M91) are first turned into those terms.
 #
 #	Three spaces a block's X Y Z can be in: joint (machine values: the
-#	tip by forward kinematics), TCP (G43.4, TRAORI, FUNCTION TCPM, or
+#	tip by forward kinematics), TCP (the reader's tcpG, TRAORI, FUNCTION TCPM, or
 #	the machine's tcp_codes: X Y Z are the tip in the workpiece frame,
 #	the axis comes from the rotaries) and a tilted work plane (G68.2,
 #	CYCLE800, PLANE SPATIAL: X Y Z are plane coordinates, the tool axis
@@ -35,16 +36,17 @@
 #	tip and axis in the workpiece frame in each.
 
 namespace eval ::fivax::verify {
-    namespace export create reader dialects
+    namespace export create reader
     namespace ensemble create -prefixes 0
     variable Options {
         {-table-offset {maybe vec3} {} "X Y Z"
             "workpiece-frame position of the table reference point (default: the machine's table_offset)"}
         {-controller {maybe word} {} NAME
-            "dialect of the NC text (default: the machine's controller; a dialect without an entry below is read as fanuc)"}
+            "dialect of the NC text (default: the machine's controller; one of lib/dialect/)"}
     }
 
-    # How the words of a block are found, per dialect:
+    # How the words of a block are found: the reader table of each
+    # controller (lib/dialect/<name>.tcl, see lib/dialect.tcl) has the keys:
     #   comment  regexp of comment text, removed before reading words; the
     #            text of each (the first capture group) is returned
     #   skip     regexp of whole lines that are not blocks (% and O1000);
@@ -52,38 +54,13 @@ namespace eval ::fivax::verify {
     #            those of one word (it is not tried on the others)
     #   word     regexp of one address word, matched with -all -inline
     #            (one flat pattern: capture groups cost 30 times more)
+    #   tcpG     the G codes that switch TCP on (G49 switches it off)
     #   syntax   gcode (ISO words), sinumerik (ISO words and the keywords
     #            SUPA, TRAORI, TRAFOOF, ORIWKS, ORIAXES, CYCLE800, read by
     #            Sinumerik) or klartext (each line translated into ISO
     #            words by Klartext first)
-    variable Dialects {
-        fanuc {
-            comment {\(([^)]*)\)}
-            skip {^\s*(%|O\d+\s*(\(.*\))?\s*)$}
-            word {[A-Z][-+.0-9]+}
-            syntax gcode
-        }
-        linuxcnc {
-            comment {\(([^)]*)\)|;(.*)$}
-            skip {^\s*%\s*$}
-            word {[A-Z][-+.0-9]+}
-            syntax gcode
-        }
-        sinumerik {
-            comment {;(.*)$}
-            skip {^\s*$}
-            word {[A-Z][-+.0-9]+}
-            syntax sinumerik
-        }
-        heidenhain {
-            comment {;(.*)$}
-            skip {^\s*$}
-            word {[A-Z][-+.0-9]+}
-            syntax klartext
-        }
-    }
     # G codes whose meaning the checker follows; others are reported.
-    variable KnownG {0 1 2 3 4 17 18 19 20 21 40 41 42 43 43.4 49 53 53.1 54 55 56 57 58 59 68.2 69
+    variable KnownG {0 1 2 3 4 17 18 19 20 21 40 41 42 43 49 53 53.1 54 55 56 57 58 59 68.2 69
         70 71 73 76 80 81 82 83 84 85 86 87 88 89 90 93 94 98 99}
     # Canned cycles.
     variable CycleG {73 76 81 82 83 84 85 86 87 88 89}
@@ -111,12 +88,6 @@ proc ::fivax::verify::create {machine args} {
 proc ::fivax::verify::reader {machine args} {
     variable Options
     Checker new $machine [::fivax::opts::parse $Options $args "verify reader"]
-}
-
-# ::fivax::verify::dialects -- Returns the names of the dialects the checker reads.
-proc ::fivax::verify::dialects {} {
-    variable Dialects
-    dict keys $Dialects
 }
 
 # ::fivax::verify::Number --
@@ -162,7 +133,7 @@ proc ::fivax::verify::LineRe {re} {
 }
 
 oo::class create ::fivax::verify::Checker {
-    # S: machine, tableOffset, the dialect's comment skip word syntax
+    # S: machine, tableOffset, the dialect's comment skip word syntax tcpG
     # (its table entry), lineRe, plainText, pi, the tables CycleG KnownG
     # KnownLetters, rolling, rotaries (the chain's names), axis:NAME,
     # Xlo Xhi Ylo Yhi Zlo Zhi (the travel's bounds), model, the modal
@@ -175,9 +146,8 @@ oo::class create ::fivax::verify::Checker {
         set S(tableOffset) [dict get $opts -table-offset]
         set name [dict get $opts -controller]
         if {$name eq ""} {set name [dict get $machine controller]}
-        if {![dict exists $::fivax::verify::Dialects $name]} {set name fanuc}
-        set dialect [dict get $::fivax::verify::Dialects $name]
-        foreach key {comment skip word syntax} {set S($key) [dict get $dialect $key]}
+        set dialect [::fivax::dialect reader $name -controller]
+        foreach key {comment skip word syntax tcpG} {set S($key) [dict get $dialect $key]}
         set S(lineRe) [::fivax::verify::LineRe $S(word)]
         # a line of plain words holds no comment and no keyword (Sinumerik's
         # are words of two letters or more): it needs no reading but split
@@ -408,13 +378,16 @@ oo::class create ::fivax::verify::Checker {
                         1 {set S(motion) 1}
                         2 - 3 {set S(motion) $g}
                         17 - 18 - 19 {set S(plane) $g}
-                        43.4 {set S(tcp) 1}
                         49 {set S(tcp) 0}
                         69 {set S(frame) {}}
                         93 {set S(mode) inverse}
                         94 {set S(mode) direct}
                         default {
-                            if {$g ni $S(KnownG)} {lappend unknown G$g $word}
+                            if {[lsearch -exact -real $S(tcpG) $g] >= 0} {
+                                set S(tcp) 1
+                            } elseif {$g ni $S(KnownG)} {
+                                lappend unknown G$g $word
+                            }
                         }
                     }
                     set arcMode [expr {$S(motion) in {2 3}}]

@@ -2,7 +2,7 @@
 #	Written by tools/mkpost.tcl. Add settings to the list below (keys are
 #	the replay options with their dash, e.g. -tol 0.005 -on-limit error).
 #	NX template_post.dat line:
-#	FIVAX_HT-PAPER,${UGII_CAM_POST_DIR}fivax/post/ht-paper.tcl,${UGII_CAM_POST_DIR}fivax/post/ht-paper.def
+#	FIVAX_HT-PAPER,${UGII_CAM_POST_DIR}fivax/post/ht-paper.tcl,${UGII_CAM_POST_DIR}fivax/post/fivax.def
 set fivax_post_here [file dirname [file normalize [info script]]]
 set fivax_settings [list -machine [file join $fivax_post_here .. machines ht-paper.tcl]]
 source [file join $fivax_post_here fivax.tcl]

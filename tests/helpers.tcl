@@ -31,6 +31,9 @@ if {![testConstraint clsfCorpus] && ![info exists ::corpusNoted]} {
     set ::corpusNoted 1
     puts "corpus tests skipped: $::clCorpus is not a directory (set FIVAX_CORPUS to the real CL files)"
 }
+# A constraint per controller of lib/dialect/ (fanuc, haas, ...): the tests
+# of one controller's own words run only while its file is there.
+apply {{} {foreach c [fivax::dialect names] {testConstraint $c 1}}}
 
 # approxList --
 #	Returns 1 when the flat number lists want and got have equal length and
@@ -145,7 +148,8 @@ proc ReplayOptions {argList} {
 #	  motion such a block;
 #	- the approach after it: rotaries alone, then X Y alone, then the
 #	  first Z move alone (with TCP it may carry X Y: the tip's X Y Z in
-#	  one block; Fanuc, LinuxCNC: with G43 or G43.4 since the tool change;
+#	  one block; G43 controls (fanuc, linuxcnc, haas): with G43 or the
+#	  TCP G code (G43.4, G234) since the tool change;
 #	  Sinumerik's D and Klartext's TOOL CALL compensate the length
 #	  themselves), before any cut
 #	  (whether the first cut is the post's entry down the tool axis or
@@ -158,8 +162,11 @@ proc programProblems {path machineFile {controller ""}} {
     if {$controller eq ""} {set controller [dict get $machine controller]}
     set checker [fivax::verify create $machine -controller $controller]
     set rotaries [fivax::machine rotaryNames $machine]
-    set safety [dict get {fanuc {40 49 80} linuxcnc {40 49 80} sinumerik 40 heidenhain {}} $controller]
-    set gLength [expr {$controller in {fanuc linuxcnc}}]
+    # the controller's safety G codes, its G43 length compensation and TCP G codes
+    set writer [fivax::dialect writer $controller]
+    set safety [lmap {- v} [dict get $writer safety] {set v}]
+    set gLength [expr {[dict get $writer length] eq "G43"}]
+    set tcpG [dict get [fivax::dialect reader $controller] tcpG]
     # blocks that may stand between the Z up and the tool change
     set cancels {G69$|CYCLE800\(\)|PLANE RESET|TRAFOOF|FUNCTION RESET TCPM|^(N\d+ )?G49$}
     if {[llength [dict get $machine tcp_codes]]} {
@@ -205,7 +212,7 @@ proc programProblems {path machineFile {controller ""}} {
             set machineZ [expr {53 in $gs}]
             if {!$motions} {lappend header {*}$gs}
             if {[regexp $cancels $line]} continue
-            if {43 in $gs || 43.4 in $gs} {set lengthOn 1}
+            if {43 in $gs || [llength [lmap g $tcpG {if {$g ni $gs} continue}]]} {set lengthOn 1}
             if {6 in [dict get $codes M] || [regexp {^\d+ TOOL CALL \d} $line]} {
                 if {!([lindex $prevBlock 0] && [lindex $prevBlock 1])} {
                     lappend problems "$n: tool change not right after Z up in machine coordinates"

@@ -13,6 +13,21 @@ namespace eval ::nxhost {
     variable count 0
 }
 
+# ::nxhost::templateDef --
+#	Returns the .def of the wrapper post file post as NX takes it: the
+#	one its template_post.dat line (in the wrapper's header) names, in
+#	the post's directory (every machine's wrapper names post/fivax.def).
+proc ::nxhost::templateDef {post} {
+    set f [open $post]
+    set text [read $f]
+    close $f
+    if {![regexp -line {^#\s*FIVAX[^,]*,[^,]+,\$\{UGII_CAM_POST_DIR\}fivax/post/(\S+\.def)$} \
+            $text -> def]} {
+        error "$post: no template_post.dat line"
+    }
+    file join [file dirname $post] $def
+}
+
 # ::nxhost::install --
 #	Copies the post, the library and the machine files into dir/fivax (as
 #	under ${UGII_CAM_POST_DIR}fivax); returns that directory.

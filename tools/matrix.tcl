@@ -27,7 +27,7 @@ foreach f {nctool.tcl corpus.tcl} {
 namespace eval ::matrixtool {
     variable Options {
         {-machines text {} "FILES" "machine files (default: every machines/*.tcl)"}
-        {-controllers text {fanuc sinumerik heidenhain linuxcnc} "NAMES" "dialects"}
+        {-controllers text {} "NAMES" "dialects (default: every controller of lib/dialect/)"}
         {-tcp text {0 1} "VALUES" "TCP settings"}
         {-workplane text {auto off} "VALUES" "work-plane settings"}
         {-tool-length {maybe real gt 0} 100 MM "tool length for CL files without one (replay -tool-length; empty: not given)"}
@@ -233,6 +233,7 @@ proc ::matrixtool::main {argv} {
     if {$machines eq ""} {
         set machines [lsort [glob -directory [file join $S(root) machines] *.tcl]]
     }
+    if {[dict get $opts -controllers] eq ""} {dict set opts -controllers [::fivax::dialect names]}
     set S(dir) [dict get $opts -dir]
     set temporary [expr {$S(dir) eq ""}]
     if {$temporary} {

@@ -1,35 +1,43 @@
 # mkpost.tcl --
 #	Writes one NX post per shipped machine: post/<machine>.tcl, a small
-#	wrapper that sets the machine and sources the shared post/fivax.tcl,
-#	and post/<machine>.def, the shared .def of the machine's dialect with
-#	the machine's name. Prints the template_post.dat line of every post in
-#	post/: post/fivax.tcl itself (FIVAX: the machine of the settings), then
-#	the others by name, the machines' and any made by hand, such as
-#	hh-paper-fig5 (README.md lists them; a test checks it).
+#	wrapper that sets the machine and sources the shared post/fivax.tcl;
+#	every wrapper's template_post.dat line names the one post/fivax.def.
+#	Prints the template_post.dat line of every post in post/:
+#	post/fivax.tcl itself (FIVAX: the machine of the settings), then the
+#	others by name, the machines' and any made by hand, such as
+#	hh-paper-fig5 (README.md lists them; a test checks it). A post with a
+#	.def of its own (post/<name>.def, nctool postDef) names that one.
 #
-#	tclsh tools/mkpost.tcl ?-check?
+#	tclsh tools/mkpost.tcl ?-check? ?-def MACHINE?
 #	-check writes nothing and exits 1 when a post file differs from what
-#	would be written (the test suite runs it).
+#	would be written (the test suite runs it). -def MACHINE copies
+#	post/fivax.def to post/MACHINE.def (MACHINE line set) for a format of
+#	that machine's own, and its wrapper's line names the copy.
 
 package require Tcl 8.6
 
 set root [file dirname [file dirname [file normalize [info script]]]]
 set auto_path [linsert $auto_path 0 [file join $root lib]]
 package require fivax 0.1
+source [file join $root tools lib nctool.tcl]
 
 namespace eval ::mkpost {
     variable options {
         {-check bool 0 "" "write nothing; exit 1 when a post file is out of date"}
+        {-def {maybe word} {} MACHINE "copy post/fivax.def to post/MACHINE.def, the machine's own .def"}
         {-help bool 0 "" "print this help"}
     }
 }
 
 # ::mkpost::Line --
 #	Returns the template_post.dat line of the post post/name.tcl (name
-#	fivax: the shared post, FIVAX; else FIVAX_<NAME>).
+#	fivax: the shared post, FIVAX; else FIVAX_<NAME>), with the .def
+#	nctool postDef finds for it.
 proc ::mkpost::Line {name} {
+    variable ::root
     set key [expr {$name eq "fivax" ? "FIVAX" : [string toupper FIVAX_$name]}]
-    return "$key,\${UGII_CAM_POST_DIR}fivax/post/$name.tcl,\${UGII_CAM_POST_DIR}fivax/post/$name.def"
+    set def [file tail [::fivax::nctool postDef [file join $root post $name.tcl]]]
+    return "$key,\${UGII_CAM_POST_DIR}fivax/post/$name.tcl,\${UGII_CAM_POST_DIR}fivax/post/$def"
 }
 
 # ::mkpost::Wrapper -- Returns the text of the wrapper post for machine name.
@@ -45,12 +53,12 @@ source [file join $fivax_post_here fivax.tcl]
 }]
 }
 
-# ::mkpost::Def -- Returns the .def text for machine name from the base .def text.
+# ::mkpost::Def -- Returns the .def text of machine name's own copy of the base .def text.
 proc ::mkpost::Def {name base} {
     if {![regsub -line {^MACHINE\s+\S+$} $base "MACHINE $name" text]} {
         error "the base .def has no MACHINE line"
     }
-    return "# $name.def -- the .def of the fivax post for $name (written by tools/mkpost.tcl\n# from post/fivax.def: edit that file and run the tool again).\n$text"
+    return "# $name.def -- the .def of the fivax post for $name: a copy of post/fivax.def\n# (tools/mkpost.tcl -def $name), to be edited for this machine's own format.\n$text"
 }
 
 # ::mkpost::Read -- Returns the contents of file path ("" when absent).
@@ -90,21 +98,23 @@ proc ::mkpost::main {argv} {
         exit 1
     }
     if {[dict get $opts -help] || [llength $rest]} {
-        puts "usage: tclsh tools/mkpost.tcl ?-check?\n[::fivax::opts help $options]"
+        puts "usage: tclsh tools/mkpost.tcl ?-check? ?-def MACHINE?\n[::fivax::opts help $options]"
         exit [expr {[llength $rest] > 0}]
     }
-    set base [Read [file join $root post fivax.def]]
+    set copy [dict get $opts -def]
+    if {$copy ne "" && ![dict get $opts -check]} {
+        Write [file join $root post $copy.def] [Def $copy [Read [file join $root post fivax.def]]]
+    }
     set stale {}
     foreach file [lsort [glob -directory [file join $root machines] *.tcl]] {
         set name [dict get [::fivax::machine load $file] name]
-        foreach {path text} [list [file join $root post $name.tcl] [Wrapper $name] \
-                [file join $root post $name.def] [Def $name $base]] {
-            if {[Read $path] eq $text} continue
-            if {[dict get $opts -check]} {
-                lappend stale [file tail $path]
-            } else {
-                Write $path $text
-            }
+        set path [file join $root post $name.tcl]
+        set text [Wrapper $name]
+        if {[Read $path] eq $text} continue
+        if {[dict get $opts -check]} {
+            lappend stale [file tail $path]
+        } else {
+            Write $path $text
         }
     }
     set names [lmap f [glob -directory [file join $root post] *.tcl] {file rootname [file tail $f]}]

@@ -9,7 +9,9 @@
 #
 #	The post. -post picks it as NX does: by name (a shipped post,
 #	post/NAME.tcl, default fivax) or as a post's .tcl file, its .def the
-#	one beside it; a shop's copied and edited post runs as it is. The
+#	one its template_post.dat line names (nctool postDef: NAME.def beside
+#	it, else fivax.def beside it); a shop's copied and edited post runs as
+#	it is. The
 #	settings given on the command line go on top of the post's own (its
 #	wrapper's fivax_settings), as FIVAX_SETTINGS does inside NX; the checks
 #	below use the settings the post assembles (read from it once loaded).
@@ -48,7 +50,7 @@ namespace eval ::replay {
     # Options of the command line only; the others are the job settings.
     variable cliOptions {
         {-post text fivax NAME|FILE
-            "the post, as NX picks it: a shipped post's name (post/NAME.tcl) or a post's .tcl file; its .def is the one beside it"}
+            "the post, as NX picks it: a shipped post's name (post/NAME.tcl) or a post's .tcl file; its .def is NAME.def beside it, else fivax.def beside it"}
         {-o text {} FILE "output NC file (default, or -: standard output)"}
         {-quiet bool 0 "" "no summary and no progress line on standard error"}
         {-check-process {enum auto on off} auto WHEN "block check in a second process: on, off, or auto: on for a CL file of 1 MB or more with two processors or more"}
@@ -76,6 +78,7 @@ namespace eval ::replay {
 }
 set auto_path [linsert $auto_path 0 [file join $::replay::root lib]]
 package require fivax 0.1
+source [file join $::replay::root tools lib nctool.tcl]
 
 # ::replay::Reset -- Clears the run's state: output target, sink, guard, progress.
 proc ::replay::Reset {} {
@@ -160,8 +163,9 @@ proc ::replay::ParseArgs {argv} {
 # ::replay::PostFiles --
 #	Returns {tcl def} of the post that -post names: a shipped post's name
 #	(post/NAME.tcl) or a post's .tcl file (a path, or a name ending in
-#	.tcl), its .def the one beside it (as NX loads a post); dies when
-#	either cannot be read.
+#	.tcl), its .def NAME.def beside it, else fivax.def beside it (nctool
+#	postDef, as the wrappers' template_post.dat lines name them); dies
+#	when either cannot be read.
 proc ::replay::PostFiles {post} {
     variable root
     if {[llength [file split $post]] > 1 || [string match *.tcl $post]} {
@@ -177,9 +181,9 @@ proc ::replay::PostFiles {post} {
         }
     }
     if {![file isfile $tcl] || ![file readable $tcl]} {Die "replay: -post $post: cannot read $tcl"}
-    set def [file rootname $tcl].def
+    set def [::fivax::nctool postDef $tcl]
     if {![file isfile $def] || ![file readable $def]} {
-        Die "replay: -post $post: cannot read its .def $def (NX loads the .def beside the post)"
+        Die "replay: -post $post: cannot read its .def $def (its own .def beside it, else fivax.def)"
     }
     list $tcl $def
 }

@@ -761,10 +761,8 @@ proc ::verifytool::main {argv} {
     lassign [ParseArgs $argv] opts path
     try {
         set machine [::fivax::machine load [dict get $opts -machine]]
-        if {[dict get $opts -controller] ne "" &&
-                [dict get $opts -controller] ni [::fivax::verify dialects]} {
-            ::fivax::nctool die "verify: bad -controller \"[dict get $opts -controller]\": must be one of\
-                [join [::fivax::verify dialects] {, }]"
+        if {[dict get $opts -controller] ne ""} {
+            ::fivax::dialect check [dict get $opts -controller] -controller
         }
         set tools [::fivax::nctool toolTable [dict get $opts -tools]]
         lassign [Run $opts $path $machine $tools] ops rows problems warnings names lines

@@ -3,12 +3,25 @@
 #	fivax::opts, -help from the same table, errors on standard error with
 #	exit 1), opening an NC or data file for reading with a clear error,
 #	writing lines through a temporary file beside the target (renamed at
-#	the end: a failed run leaves no partial file), CSV quoting and reading
-#	a tool table file. Needs the fivax package (opts, Fail, dryrun).
+#	the end: a failed run leaves no partial file), CSV quoting, reading
+#	a tool table file and the .def of a post. Needs the fivax package
+#	(opts, Fail, dryrun).
 
 namespace eval ::fivax::nctool {
-    namespace export args die open writeLines csvField toolTable
+    namespace export args die open writeLines csvField toolTable postDef
     namespace ensemble create -prefixes 0
+}
+
+# ::fivax::nctool::postDef --
+#	Returns the .def of the post whose .tcl file is tcl: its own copy
+#	<name>.def beside it when there is one (a format of its own, as
+#	hh-paper-fig5's), else the one shared post/fivax.def beside it (what
+#	every wrapper tools/mkpost.tcl writes names in its template_post.dat
+#	line).
+proc ::fivax::nctool::postDef {tcl} {
+    set own [file rootname $tcl].def
+    if {[file exists $own]} {return $own}
+    file join [file dirname $tcl] fivax.def
 }
 
 # ::fivax::nctool::die -- Prints msg on standard error and exits with status 1.

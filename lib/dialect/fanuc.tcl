@@ -1,0 +1,27 @@
+# fanuc.tcl --
+#	Fanuc 30i style ISO G code (the default controller): % lines, O
+#	number, ( ) comments, G43 H length compensation, G53 machine Z, G93
+#	inverse time, TCP G43.4 H (in the first X Y Z block) cancelled by
+#	G49, work plane G68.2 + G53.1 (Euler Z-X'-Z''), G4 P in milliseconds,
+#	canned cycles G73 G76 G81..G89, end M30. Spec dialects.md section 1.
+#	Writer keys: lib/output.tcl (Dialects); reader keys: lib/verify.tcl.
+
+::fivax::dialect::define fanuc {
+    syntax gcode program O%04d percent 1 comment paren semicolon 0
+    safety {G_cutcom 40 G_length 49 G_cycle 80} reset {G69} units {21 20}
+    length G43 machineZ G53 inverse 1
+    tcp {on G43.4 off G49} plane g68.2 arcs {planes {17 18 19} helix 1}
+    dwell P_ms
+    cycles {drill 81 drill_dwell 82 drill_deep 83 drill_break_chip 73 tap 84
+        bore 85 bore_drag 86 bore_no_drag 76 bore_back 87 bore_manual 88 bore_dwell 89}
+    letters {G M F S T H D P Q R I J K L}
+    active {}
+    ends {{2 30 99} {%}}
+    cutcom GD
+} {
+    comment {\(([^)]*)\)}
+    skip {^\s*(%|O\d+\s*(\(.*\))?\s*)$}
+    word {[A-Z][-+.0-9]+}
+    tcpG {43.4}
+    syntax gcode
+}

@@ -1,0 +1,8 @@
+# umc750.tcl -- fivax post for the machine umc750 (machines/umc750.tcl).
+#	Written by tools/mkpost.tcl. Add settings to the list below (keys are
+#	the replay options with their dash, e.g. -tol 0.005 -on-limit error).
+#	NX template_post.dat line:
+#	FIVAX_UMC750,${UGII_CAM_POST_DIR}fivax/post/umc750.tcl,${UGII_CAM_POST_DIR}fivax/post/fivax.def
+set fivax_post_here [file dirname [file normalize [info script]]]
+set fivax_settings [list -machine [file join $fivax_post_here .. machines umc750.tcl]]
+source [file join $fivax_post_here fivax.tcl]
