@@ -106,6 +106,7 @@ namespace eval ::fuzz {
     variable programForms {
         fanuc {first {^%$} close {^%$} start {\mG2[01] G90\M} end {\mM(30|0?2)\M}}
         linuxcnc {first {^%$} close {^%$} start {\mG2[01] G90\M} end {\mM(30|0?2)\M}}
+        haas {first {^%$} close {^%$} start {\mG2[01] G90\M} end {\mM(30|0?2)\M}}
         sinumerik {first {} close {} start {\mG7[01] G90\M} end {\mM(30|0?2)\M}}
         heidenhain {first {^0 BEGIN PGM } close {^\d+ END PGM } start {BEGIN PGM}
             end {\mM(30|0?2)\M}}
@@ -904,6 +905,12 @@ proc ::fuzz::main {argv} {
     set R(sources) [Sources $corpus]
     set R(machines) [lsort [glob -directory [file join $root machines] *.tcl]]
     set t0 [clock milliseconds]
+    # an error in the harness's own event handlers ends the run (it would
+    # otherwise wait for the case that raised it for ever)
+    interp bgerror {} [list apply {{msg opts} {
+        puts stderr "fuzz: internal error of the harness: [dict get $opts -errorinfo]"
+        exit 2
+    }}]
     try {
         after 0 ::fuzz::Next
         vwait ::fuzz::R(done)
