@@ -10,8 +10,9 @@
 #	  tool change, as user-defined events do;
 #	- the first motion of an operation fires MOM_initial_move (after a tool
 #	  change) or MOM_first_move in place of its own event, with
-#	  mom_motion_event naming that event (Post Builder's MOM_first_move
-#	  ends with `catch {MOM_$mom_motion_event}`); a cycle's first hole
+#	  mom_motion_event initial_move for a straight initial move, else
+#	  naming the motion's event (Post Builder's MOM_first_move ends with
+#	  `catch {MOM_$mom_motion_event}`; see MotionEvent); a cycle's first hole
 #	  fires it at the hole's R point first, then the hole's event (NX's
 #	  event dictionary: "If the first motion is a cycle move, a
 #	  MOM_initial_move event is generated for the mom_cycle_rapid_to_pos");
@@ -933,15 +934,25 @@ oo::class create ::fivax::mom::Runtime {
         set mode [lindex [expr {$S(outUnit) eq "IN" ? {IPM IPR} : {MMPM MMPR}}] $perRev]
         my Globals [list mom_feed_rate_mode $mode mom_programmed_feed_rate $value \
             mom_feed_cut_value $value]
-        if {$mode in {MMPR IPR}} {
-            set rpm [my Child {expr {[info exists ::mom_spindle_speed] ? $::mom_spindle_speed : 0.0}}]
-            set S(fpm) [expr {$value * $rpm}]
+        set S(feed) $value
+        set S(perRev) $perRev
+        my PerMinute
+        if {$perRev} {
             my Globals [list mom_feed_rate_per_rev $value mom_feed_rate $S(fpm)]
         } else {
-            set S(fpm) $value
             my Globals [list mom_feed_rate $value]
         }
-        set S(feed) $value
+    }
+
+    # PerMinute --
+    #	Sets S(fpm), the programmed feed per minute: a feed per revolution
+    #	times the spindle speed of the moment (mom_spindle_speed).
+    method PerMinute {} {
+        set S(fpm) $S(feed)
+        if {$S(perRev)} {
+            set rpm [my Child {expr {[info exists ::mom_spindle_speed] ? $::mom_spindle_speed : 0.0}}]
+            set S(fpm) [expr {$S(feed) * $rpm}]
+        }
     }
 
     # Motion --
@@ -980,21 +991,24 @@ oo::class create ::fivax::mom::Runtime {
     }
 
     # FeedGlobals --
-    #	Sets the globals of a cutting move at the programmed feed.
+    #	Sets the globals of a cutting move at the programmed feed:
+    #	mom_feed_rate per minute (as Post Builder's FEEDRATE_SET reads it;
+    #	a feed per revolution at the spindle speed of the moment).
     #	Errors: {FIVAX MOM FEED} before any FEDRAT.
     method FeedGlobals {rec} {
         if {![info exists S(feed)]} {
             ::fivax::Fail MOM FEED "[::fivax::mom::Where $rec]: GOTO: feed move before any FEDRAT"
         }
+        if {$S(perRev)} {my PerMinute}
         lappend S(ops) v mom_motion_type CUT v mom_programmed_feed_rate $S(feed) \
-            v mom_feed_rate $S(feed)
+            v mom_feed_rate $S(fpm)
     }
 
     # Move --
     #	Fires MOM_before_motion and the motion event (its name also in
     #	mom_motion_event); the first motion of a path fires MOM_initial_move
     #	after a tool change, else MOM_first_move, in place of the motion's
-    #	event, with mom_motion_event naming that event (as NX does, inferred
+    #	event, mom_motion_event as MotionEvent says (as NX does, inferred
     #	from Post Builder's posts: their MOM_first_move calls
     #	MOM_$mom_motion_event, their MOM_initial_move MOM_rapid_move or
     #	MOM_linear_move by mom_programmed_feed_rate; were the motion's own
@@ -1033,8 +1047,25 @@ oo::class create ::fivax::mom::Runtime {
     method MoveOps {event final} {
         set before [my Fires before_motion]
         set handler [my Fires $final]
-        set ops [list v mom_motion_event $event v ::mom_current_motion $final {*}$before {*}$handler]
+        set ops [list v mom_motion_event [my MotionEvent $event $final] v ::mom_current_motion $final \
+            {*}$before {*}$handler]
         list $ops [expr {([llength $before] + [llength $handler]) / 3}]
+    }
+
+    # MotionEvent --
+    #	Returns mom_motion_event for a motion whose own event is event and
+    #	whose handler is MOM_<final>: initial_move for a rapid or straight
+    #	first motion after a tool change (NX's event dictionary lists
+    #	initial_move among mom_motion_event's values and first_move not;
+    #	Post Builder's MOM_initial_move picks MOM_rapid_move or
+    #	MOM_linear_move by mom_programmed_feed_rate, its MOM_first_move
+    #	calls MOM_$mom_motion_event, and ugpost_base's RAPID_SET forces X Y
+    #	on an initial_move), else the motion's own event. Inferred: a curve
+    #	(arc, helix, NURBS) keeps its own name, which NX does not document;
+    #	a straight move in its place would cut a chord.
+    method MotionEvent {event final} {
+        expr {$final eq "initial_move" && $event in {rapid_move linear_move}
+            ? "initial_move" : $event}
     }
 
     # SetPosition --
@@ -1062,7 +1093,8 @@ oo::class create ::fivax::mom::Runtime {
     #	mom_kin_arc_output_mode): FULL_CIRCLE at most 360 degrees a piece,
     #	QUADRANT at most 90, END_POINT the whole arc, LINEAR as linear
     #	moves within the arc's tolerance (0.002 mm when the CIRCLE has
-    #	none). A helix piece goes to MOM_helix_move when the post has one.
+    #	none), as also an arc beyond the post's limits (ArcBeyondPost).
+    #	A helix piece goes to MOM_helix_move when the post has one.
     #	mom_arc_direction is the turning sense about mom_arc_axis: NX-style
     #	CIRCLEs (11 numbers: NX, Makino) turn clockwise about their vector,
     #	the short APT form (6 or 7 numbers: Creo, SolidWorks CAM)
@@ -1094,6 +1126,9 @@ oo::class create ::fivax::mom::Runtime {
         set mode [my PostVar [expr {$helix ? "mom_kin_helical_arc_output_mode"
             : "mom_kin_arc_output_mode"}] FULL_CIRCLE]
         my FeedGlobals $rec
+        if {[my ArcBeyondPost $circle $start $end $center $axis $sense $times]} {
+            set mode LINEAR
+        }
         if {$mode eq "LINEAR"} {
             set tol [expr {[dict exists $circle tolerance] && [dict get $circle tolerance] > 0
                 ? [dict get $circle tolerance] : 0.002}]
@@ -1133,6 +1168,36 @@ oo::class create ::fivax::mom::Runtime {
             set S(moveLength) $length
             my Move $event
         }
+    }
+
+    # ArcBeyondPost --
+    #	Returns 1 when the arc is shorter than the post's
+    #	mom_kin_min_arc_length or its radius lies outside
+    #	mom_kin_min_arc_radius .. mom_kin_max_arc_radius (each where the
+    #	post sets a number): NX then writes it as linear gotos (NX's event
+    #	dictionary: "Any arc with a radius larger than the maximum will
+    #	output as linear gotos"; the shortest arc "before the post defaults
+    #	to linear interpolation").
+    method ArcBeyondPost {circle start end center axis sense times} {
+        set limits {}
+        foreach {name default} {mom_kin_min_arc_radius 0 mom_kin_max_arc_radius Inf
+                mom_kin_min_arc_length 0} {
+            set value [my PostVar $name $default]
+            lappend limits [expr {[string is double -strict $value] ? $value : $default}]
+        }
+        lassign $limits minR maxR minL
+        set r [::fivax::curve::radius $start $center $axis]
+        if {$r < $minR || $r > $maxR} {return 1}
+        if {$minL <= 0} {return 0}
+        set length 0.0
+        set from $start
+        foreach piece [my Curve $circle ARC CIRCLE arcSplit $start $end $center $axis $sense \
+                $times Inf] {
+            lassign $piece p sweep
+            set length [expr {$length + [my ArcLength $from $p $center $axis $sweep]}]
+            set from $p
+        }
+        expr {$length < $minL}
     }
 
     # ArcRadius --
@@ -1439,7 +1504,7 @@ oo::class create ::fivax::mom::Runtime {
     #	fires MOM_<cycle>_move; the first motion of a path first fires
     #	MOM_initial_move / MOM_first_move at mom_cycle_rapid_to_pos (the
     #	event dictionary says so of NX), a rapid positioning: mom_motion_type
-    #	CYCLE, mom_motion_event rapid_move (inferred: Post Builder's
+    #	CYCLE, mom_motion_event initial_move or rapid_move (inferred: Post Builder's
     #	MOM_first_move calls MOM_$mom_motion_event, which would drill the
     #	hole twice were it the hole's event).
     method Hole {rec point} {

@@ -528,11 +528,13 @@ proc fivax_cutcom_due {src} {
 # first motion after a tool change event. If the first motion is a cycle
 # move, a MOM_initial_move event is generated for the
 # mom_cycle_rapid_to_pos": NX's event dictionary, Post Builder's
-# POSTBUILD/app/mom_vars_csv.txt). mom_motion_event names the motion's own
-# event (rapid_move, linear_move, circular_move, nurbs_move, drill_move
-# ...): Post Builder's MOM_first_move ends with `catch
-# {MOM_$mom_motion_event}`, while its MOM_initial_move only positions
-# (MOM_rapid_move or MOM_linear_move by mom_programmed_feed_rate) and
+# POSTBUILD/app/mom_vars_csv.txt). In MOM_first_move mom_motion_event
+# names the motion's own event (rapid_move, linear_move, circular_move,
+# nurbs_move, drill_move ...): Post Builder's MOM_first_move ends with
+# `catch {MOM_$mom_motion_event}`; in MOM_initial_move it may be
+# initial_move (the dictionary lists that value), and Post Builder's
+# MOM_initial_move only positions (MOM_rapid_move or MOM_linear_move by
+# mom_programmed_feed_rate) and
 # leaves a cycle's first hole to the hole's own event after it. NX
 # documents no more than that, so the post takes every order: the
 # first-move handler writes the whole motion the event names (a cycle's

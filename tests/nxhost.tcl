@@ -66,7 +66,7 @@ proc ::nxhost::session {post def cwd output {prep {}}} {
     }
     vars $s [list mom_definition_file_name $def mom_event_handler_file_name $post \
         mom_output_file_full_name $output \
-        mom_output_file_directory [file dirname $output] \
+        mom_output_file_directory [file dirname $output]/ \
         mom_output_file_basename [file rootname [file tail $output]] \
         mom_output_file_suffix [string trimleft [file extension $output] .] \
         mom_output_unit MM mom_part_unit MM]

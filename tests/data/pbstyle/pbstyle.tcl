@@ -110,13 +110,20 @@ proc MOM_before_motion {} {
     if {$mom_cycle_spindle_axis != 2} {MOM_abort "pbstyle: spindle axis $mom_cycle_spindle_axis"}
 }
 
-# MOM_initial_move -- Positions in X Y, length compensation in Z, spindle on.
+# MOM_initial_move --
+#	Positions in X Y, length compensation in Z, spindle on; then a feed
+#	move (mom_motion_event is initial_move for a straight motion: its
+#	feed tells) or a curve (which keeps its own event name).
 proc MOM_initial_move {} {
-    global mom_motion_event
+    global mom_motion_event mom_programmed_feed_rate
     MOM_do_template initial_move
     MOM_do_template tool_length_adjust
     MOM_do_template spindle_rpm
-    if {$mom_motion_event ne "rapid_move"} {MOM_$mom_motion_event}
+    if {$mom_motion_event ne "initial_move"} {
+        MOM_$mom_motion_event
+    } elseif {$mom_programmed_feed_rate != 0} {
+        MOM_linear_move
+    }
 }
 
 # MOM_first_move -- The motion itself.
