@@ -83,7 +83,7 @@ namespace eval ::fivax::mom {
         variable event
         global mom_prev_mcs_goto mom_prev_tool_axis mom_mcs_goto mom_tool_axis mom_pos \
             mom_cl_line mom_motion_type mom_programmed_feed_rate mom_feed_rate mom_motion_event \
-            mom_prev_pos
+            mom_prev_pos mom_last_pos
         set saved $event
         try {
             foreach {op name value} $ops {
@@ -98,6 +98,7 @@ namespace eval ::fivax::mom {
                             mom_tool_axis(0) mom_tool_axis(1) mom_tool_axis(2)
                         lassign $value mom_pos(0) mom_pos(1) mom_pos(2)
                         lassign $name mom_prev_pos(0) mom_prev_pos(1) mom_prev_pos(2)
+                        lassign $name mom_last_pos(0) mom_last_pos(1) mom_last_pos(2)
                     }
                     e {
                         set event $name
@@ -435,7 +436,7 @@ oo::class create ::fivax::mom::Runtime {
             toolNames {} msysPending 0 unknown {} udes {}
             scale 1.0 clUnit MM outUnit MM unitsSeen 0 firstUnit MM nurbs {}
             files {} machineTime 0.0 cuttingTime 0.0 fpm 0.0 moveLength 0.0
-            modeFired 0 contact {} contactOn 0
+            modeFired 0 contact {} contactOn 0 retractPos {}
         }
         set my [namespace which my]
         set S(nc) [::fivax::nc::create -sequence 0 -overflow [list $my SequenceOverflow] \
@@ -1073,7 +1074,12 @@ oo::class create ::fivax::mom::Runtime {
     #	copies (the last position is kept for them: S(position), the point
     #	and axis in one list), and the move's length (S(moveLength), for
     #	the times). mom_pos and mom_prev_pos (0-2) mirror mom_mcs_goto and
-    #	mom_prev_mcs_goto: the replay runtime does no kinematics.
+    #	mom_prev_mcs_goto: the replay runtime does no kinematics. mom_last_pos
+    #	is where the tool was: mom_prev_pos, but the retract position of
+    #	the last hole after a cycle's (NX's dictionary: "The previous tool
+    #	position. Not the same mom_prev_pos. The retracto position will be
+    #	used following canned cycles"; Post Builder's RAPID_SET orders a
+    #	rapid's spindle-axis and traverse blocks by it).
     method SetPosition {point axis} {
         # (list: concat makes the strings of the axis's numbers)
         set position [list {*}$point {*}$axis]
@@ -1083,6 +1089,10 @@ oo::class create ::fivax::mom::Runtime {
         lassign $point x y z
         set S(moveLength) [expr {sqrt(($x - $x0) ** 2 + ($y - $y0) ** 2 + ($z - $z0) ** 2)}]
         lappend S(ops) p $S(position) $position
+        if {[llength $S(retractPos)]} {
+            my Array mom_last_pos $S(retractPos)
+            set S(retractPos) {}
+        }
         set S(point) $point
         set S(position) $position
     }
@@ -1093,8 +1103,13 @@ oo::class create ::fivax::mom::Runtime {
     #	mom_kin_arc_output_mode): FULL_CIRCLE at most 360 degrees a piece,
     #	QUADRANT at most 90, END_POINT the whole arc, LINEAR as linear
     #	moves within the arc's tolerance (0.002 mm when the CIRCLE has
-    #	none), as also an arc beyond the post's limits (ArcBeyondPost).
-    #	A helix piece goes to MOM_helix_move when the post has one.
+    #	none), as also an arc beyond the post's limits (ArcBeyondPost)
+    #	and a helix when the post has no MOM_helix_move. Inferred from
+    #	Post Builder's PB_CMD_init_helix, which "enables your post to output
+    #	helix" by setting mom_kin_helical_arc_output_mode and defining
+    #	MOM_helix_move: a post without it has no block for the rise (its
+    #	CIRCLE_SET suppresses the coordinate along the arc's axis), so that
+    #	a helix given to its MOM_circular_move would be cut flat.
     #	mom_arc_direction is the turning sense about mom_arc_axis: NX-style
     #	CIRCLEs (11 numbers: NX, Makino) turn clockwise about their vector,
     #	the short APT form (6 or 7 numbers: Creo, SolidWorks CAM)
@@ -1126,7 +1141,8 @@ oo::class create ::fivax::mom::Runtime {
         set mode [my PostVar [expr {$helix ? "mom_kin_helical_arc_output_mode"
             : "mom_kin_arc_output_mode"}] FULL_CIRCLE]
         my FeedGlobals $rec
-        if {[my ArcBeyondPost $circle $start $end $center $axis $sense $times]} {
+        if {($helix && ![my Has MOM_helix_move])
+                || [my ArcBeyondPost $circle $start $end $center $axis $sense $times]} {
             set mode LINEAR
         }
         if {$mode eq "LINEAR"} {
@@ -1154,7 +1170,7 @@ oo::class create ::fivax::mom::Runtime {
         my Array mom_pos_arc_center $center
         my Array mom_pos_arc_axis $nxAxis
         my Globals [list mom_pos_arc_plane $plane]
-        set event [expr {$helix && [my Has MOM_helix_move] ? "helix_move" : "circular_move"}]
+        set event [expr {$helix ? "helix_move" : "circular_move"}]
         set from $start
         foreach piece $pieces {
             lassign $piece p sweep
@@ -1328,7 +1344,11 @@ oo::class create ::fivax::mom::Runtime {
         return $default
     }
 
-    # FromHome -- FROM and GOHOME: set the position and fire the event.
+    # FromHome --
+    #	FROM and GOHOME: set the position and fire the event, named in
+    #	mom_motion_event and mom_current_motion (NX's dictionary: "Same as
+    #	mom_motion_event"; Post Builder's RAPID_SET, which MOM_from_move
+    #	calls, reads it).
     method FromHome {rec which} {
         my EnsurePath
         if {[llength [dict get $rec axis]]} {set S(axis) [dict get $rec axis]}
@@ -1336,12 +1356,14 @@ oo::class create ::fivax::mom::Runtime {
         if {$which eq "from"} {
             my Array mom_from_ref_pos [dict get $rec point]
             my SetPosition [dict get $rec point] $S(axis)
-            my Globals [list mom_motion_type FROM mom_motion_event from_move]
+            my Globals [list mom_motion_type FROM mom_motion_event from_move \
+                mom_current_motion from_move]
             my Fire from_move
         } else {
             my SetPosition [dict get $rec point] $S(axis)
             my Globals [list mom_motion_type GOHOME mom_motion_event gohome_move \
-                mom_programmed_feed_rate 0 mom_feed_rate $S(rapidFeed)]
+                mom_current_motion gohome_move mom_programmed_feed_rate 0 \
+                mom_feed_rate $S(rapidFeed)]
             my Fire before_motion 0
             my Fire gohome_move
         }
@@ -1379,7 +1401,15 @@ oo::class create ::fivax::mom::Runtime {
     #	CUTCOM: fires MOM_cutcom_on or MOM_cutcom_off. The plane is
     #	mom_cutcom_plane XY, YZ or ZX (as NX gives it: Post Builder posts
     #	index mom_sys_cutcom_plane_code by it), the register
-    #	mom_cutcom_register; a record without them leaves both as they were.
+    #	mom_cutcom_adjust_register (NX's dictionary: "The value of the
+    #	cutcom adjust register in CUTCOM UDE"; Post Builder's linear_move
+    #	block writes D from it) and mom_cutcom_register (the operation's
+    #	register in the dictionary, which the CL does not tell apart;
+    #	fivax's post reads it); a record without them leaves them as they
+    #	were. A CUTCOM without register gives no register: NX would take
+    #	the tool's (mom_tool_cutcom_register), which the CL does not carry,
+    #	and ugpost_base's TOOL_SET copies it only for posts that call it in
+    #	MOM_cutcom_on.
     method Cutcom {rec} {
         my EnsurePath
         set mode [dict get $rec mode]
@@ -1388,7 +1418,8 @@ oo::class create ::fivax::mom::Runtime {
             lappend pairs mom_cutcom_plane [string range [dict get $rec plane] 0 1]
         }
         if {[dict get $rec register] ne ""} {
-            lappend pairs mom_cutcom_register [dict get $rec register]
+            lappend pairs mom_cutcom_register [dict get $rec register] \
+                mom_cutcom_adjust_register [dict get $rec register]
         }
         my Globals $pairs
         my Fire [expr {$mode eq "OFF" ? "cutcom_off" : "cutcom_on"}]
@@ -1506,7 +1537,10 @@ oo::class create ::fivax::mom::Runtime {
     #	event dictionary says so of NX), a rapid positioning: mom_motion_type
     #	CYCLE, mom_motion_event initial_move or rapid_move (inferred: Post Builder's
     #	MOM_first_move calls MOM_$mom_motion_event, which would drill the
-    #	hole twice were it the hole's event).
+    #	hole twice were it the hole's event). mom_current_motion is the
+    #	hole's event, as mom_motion_event (the dictionary: "Same as
+    #	mom_motion_event"); the tool stays at the hole's retract position
+    #	(mom_last_pos of the next motion, see SetPosition).
     method Hole {rec point} {
         set params [dict get $S(cycle) params]
         set t [::fivax::vec::unit $S(axis)]
@@ -1521,12 +1555,13 @@ oo::class create ::fivax::mom::Runtime {
         }
         my SetPosition $point $S(axis)
         set event [dict get $S(cycle) event]_move
-        my Globals [list mom_motion_event $event]
+        my Globals [list mom_motion_event $event mom_current_motion $event]
         my Fire before_motion 0
         if {![my Fire $event]} {
             ::fivax::Fail MOM CYCLE "[::fivax::mom::Where $rec]: the post has no MOM_$event:\
                 the holes of this cycle cannot be output"
         }
+        set S(retractPos) $pos(retract)
     }
 
     # Unknown --
