@@ -19,15 +19,17 @@
 #	- cycles fire their activation event (MOM_drill ...) with mom_cycle_*,
 #	  one MOM_<cycle>_move per hole and MOM_cycle_off;
 #	- arcs and helixes come in pieces by the post's mom_kin_arc_output_mode
-#	  and mom_kin_helical_arc_output_mode;
+#	  and mom_kin_helical_arc_output_mode, a helix as linear moves to a
+#	  post without MOM_helix_move;
 #	- lengths are converted from the CL's units to the post's
 #	  mom_kin_output_unit;
 #	- the globals NX sets on every event are set (NxGlobals, Move,
-#	  SetPosition, Arc: mom_prev_pos, mom_current_motion, the rapid rate in
-#	  mom_feed_rate, mom_pos_arc_*, the times), MOM_machine_mode fires
-#	  before the first operation, MOM_start_of_group / _end_of_group
-#	  around the program (one group, PROGRAM), as Post Builder posts
-#	  expect (their header and numbering start there);
+#	  SetPosition, Arc: mom_prev_pos, mom_last_pos, mom_current_motion,
+#	  the rapid rate in mom_feed_rate, mom_pos_arc_*, the times),
+#	  MOM_machine_mode fires before the first operation,
+#	  MOM_start_of_group / _end_of_group around the program (one group,
+#	  PROGRAM), as Post Builder posts expect (their header and
+#	  numbering start there);
 #	- MOM_do_template runs each .def block as one proc compiled in the
 #	  post interpreter (TemplateScript); every line passes the post's
 #	  MOM_before_output in mom_o_buffer; a sequence number past the .def's
