@@ -104,7 +104,7 @@ proc MOM_linear_move {} clpath_cut
 proc MOM_from_move {} {clpath_point 1}
 proc MOM_gohome_move {} {clpath_point 1}
 
-# MOM_circular_move -- An arc piece (at most 90 degrees) as points within clpath_tol.
+# MOM_circular_move -- An arc or helix piece (at most 90 degrees) as points within clpath_tol.
 proc MOM_circular_move {} {
     foreach P [fivax::curve arc [clpath_vec mom_prev_mcs_goto] [clpath_vec mom_mcs_goto] \
             [clpath_vec mom_arc_center] [clpath_vec mom_arc_axis] \
@@ -112,6 +112,9 @@ proc MOM_circular_move {} {
         clpath_point 0 $P
     }
 }
+
+# MOM_helix_move -- A helix piece as an arc piece (without it the runtime linearises helixes).
+proc MOM_helix_move {} MOM_circular_move
 
 # MOM_nurbs_move -- The NURBS (mom_nurbs_*) as points within clpath_tol.
 proc MOM_nurbs_move {} {
@@ -126,11 +129,11 @@ proc MOM_nurbs_move {} {
 # clpath_first --
 #	An operation's first motion: the motion mom_motion_event names (the
 #	runtime fires MOM_initial_move / MOM_first_move in place of its
-#	event), an arc or NURBS from its start (the CL point before it, the
+#	event), an arc, helix or NURBS from its start (the CL point before it, the
 #	last of the previous operation), else the point.
 proc clpath_first {} {
     switch -- $::mom_motion_event {
-        circular_move {
+        circular_move - helix_move {
             clpath_point 0 [clpath_vec mom_prev_mcs_goto]
             MOM_circular_move
         }
