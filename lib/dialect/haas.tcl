@@ -31,7 +31,7 @@
 ::fivax::dialect::define haas {
     syntax gcode program O%05d percent 1 comment paren semicolon 0
     safety {G_cutcom 40 G_length 49 G_cycle 80} reset {} units {21 20}
-    length G43 machineZ G53 inverse 1
+    methods {} inverse 1
     tcp {on G234 off G49} plane {} arcs {planes {17 18 19} helix 1}
     dwell P_ms
     cycles {drill 81 drill_dwell 82 drill_deep 83 drill_break_chip 73 tap 84
@@ -40,6 +40,7 @@
     active {}
     ends {{2 30 99} {%}}
     cutcom GD
+    words {G234 haas Haas}
 } {
     comment {\(([^)]*)\)}
     skip {^\s*(%|O\d+\s*(\(.*\))?\s*)$}

@@ -10,7 +10,7 @@
 ::fivax::dialect::define linuxcnc {
     syntax gcode program {} percent 1 comment paren semicolon 1
     safety {G_cutcom 40 G_length 49 G_cycle 80} reset {} units {21 20}
-    length G43 machineZ G53 inverse 1
+    methods {} inverse 1
     tcp {} plane {} arcs {planes {17 18 19} helix 1}
     dwell P_s
     cycles {drill 81 drill_dwell 82 drill_deep 83 drill_break_chip 73 tap 84
@@ -20,6 +20,7 @@
         ABORT PY PYRUN PYRELOAD}
     ends {{2 30 99} {%}}
     cutcom {}
+    words {LOGOPEN PYRELOAD linuxcnc LinuxCNC}
 } {
     comment {\(([^)]*)\)|;(.*)$}
     skip {^\s*%\s*$}
