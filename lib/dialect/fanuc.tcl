@@ -45,5 +45,9 @@ oo::class create ::fivax::dialect::fanuc::Writer {
     skip {^\s*(%|O\d+\s*(\(.*\))?\s*)$}
     word {[A-Z][-+.0-9]+}
     tcpG {43.4}
-    syntax gcode
+    plane {68.2 53.1 zxz}
+    methods {}
+    plain 1
+    end {}
+    callComp 0
 }

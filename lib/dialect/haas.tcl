@@ -46,5 +46,9 @@
     skip {^\s*(%|O\d+\s*(\(.*\))?\s*)$}
     word {[A-Z][-+.0-9]+}
     tcpG {234}
-    syntax gcode
+    plane {}
+    methods {}
+    plain 1
+    end {}
+    callComp 0
 }

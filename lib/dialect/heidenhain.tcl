@@ -182,5 +182,99 @@ oo::class create ::fivax::dialect::heidenhain::Writer {
     skip {^\s*$}
     word {[A-Z][-+.0-9]+}
     tcpG {43.4}
-    syntax klartext
+    plane {}
+    methods ::fivax::dialect::heidenhain::Reader
+    plain 0
+    end {^\s*(\d+\s+)?END PGM\M}
+    callComp 1
+}
+
+# The reader's forms of this control (mixed into ::fivax::verify::Checker).
+oo::class create ::fivax::dialect::heidenhain::Reader {
+    variable S
+
+    # Returns the Klartext line as the ISO words the reader follows: L
+    # (FMAX: G0, else G1, M91: G53, R0 left out), C with DR-/DR+ (G2/G3,
+    # the centre from the last CC as I J), TOOL CALL (T M6, S), FUNCTION
+    # TCPM (the reader's tcpG) and FUNCTION RESET TCPM (G49), STOP (M0), BEGIN PGM's
+    # units (G21 MM, G20 INCH); CC, PLANE SPATIAL and PLANE RESET set the
+    # state and give no block; END PGM and cycle 9 are no blocks (read
+    # tells the program's end); a comment "; text" stays one.
+    method Translate {line} {
+        if {[regexp {^\d+ L(?: \S+)*$} $line]} {
+            # numbered, single spaces (every L line fivax writes): the
+            # tokens are split at the spaces, as the general way finds them
+            set tokens [lrange [split $line " "] 2 end]
+        } else {
+            set body [string trim $line]
+            regexp {^\d+\s+(.*)$} $body -> body
+            if {[regexp {^L(\s.*)?$} $body -> rest]} {
+                set tokens [regexp -all -inline {\S+} $rest]
+            }
+        }
+        if {[info exists tokens]} {
+            # (an L line is a straight move: FMAX makes it rapid for this
+            # block only, else it feeds at the modal F)
+            set iso [expr {"FMAX" in $tokens ? {} : {G1}}]
+            foreach tok $tokens {
+                if {$tok eq "FMAX"} {
+                    set iso [linsert $iso 0 G0]
+                } elseif {$tok in {R0 RL RR}} {
+                } elseif {$tok eq "M91"} {
+                    set iso [linsert $iso 0 G0 G53]
+                } elseif {[string match F* $tok] && [regexp {^F[0-9.]+$} $tok]} {
+                    lappend iso $tok
+                } else {
+                    lappend iso $tok
+                }
+            }
+            return [join $iso]
+        }
+        set pl {[-+]?[0-9.]+}
+        if {[regexp {^BEGIN PGM\s+\S+\s+(MM|INCH)\s*$} $body -> units]} {
+            return [dict get {MM G21 INCH G20} $units]
+        }
+        if {[regexp {^;} $body] || [regexp {^(BEGIN|END) PGM\M} $body]
+                || [regexp {^CYCL DEF 9\.} $body]} {
+            return [expr {[string index $body 0] eq ";" ? $body : ""}]
+        }
+        if {[regexp "^CC\\s+(.*)$" $body -> rest]} {
+            foreach tok [regexp -all -inline {\S+} $rest] {
+                if {[regexp "^(\[XYZ\])($pl)$" $tok -> axis value]} {dict set S(cc) $axis $value}
+            }
+            return ""
+        }
+        if {[regexp {^C\s+(.*)$} $body -> rest]} {
+            set iso {}
+            foreach tok [regexp -all -inline {\S+} $rest] {
+                if {$tok in {DR- DR+}} {
+                    set iso [linsert $iso 0 G17 [expr {$tok eq "DR-" ? "G2" : "G3"}]]
+                } elseif {$tok ni {R0 RL RR}} {
+                    lappend iso $tok
+                }
+            }
+            foreach {axis letter} {X I Y J} {
+                if {[dict exists $S(cc) $axis] && $S($axis) ne ""} {
+                    lappend iso $letter[expr {[dict get $S(cc) $axis] - $S($axis)}]
+                }
+            }
+            return [join $iso]
+        }
+        if {[regexp {^TOOL CALL\s*(\d*)\s*[XYZ]?\s*(S\d+)?} $body -> tool speed]} {
+            # (a tool change: T with M6, as in ISO)
+            return [string trim "[expr {$tool ne "" ? "T$tool M6" : ""}] $speed"]
+        }
+        if {[regexp {^FUNCTION TCPM\M} $body]} {return G[lindex $S(tcpG) 0]}
+        if {[regexp {^FUNCTION RESET TCPM\M} $body]} {return G49}
+        if {[regexp "^PLANE SPATIAL SPA($pl) SPB($pl) SPC($pl)" $body -> a b c]} {
+            my SetFrame spatial [list $a $b $c] {0.0 0.0 0.0}
+            return ""
+        }
+        if {[regexp {^PLANE RESET\M} $body]} {
+            my EndFrame
+            return ""
+        }
+        if {$body eq "STOP"} {return M0}
+        return $body
+    }
 }

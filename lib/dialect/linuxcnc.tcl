@@ -26,5 +26,9 @@
     skip {^\s*%\s*$}
     word {[A-Z][-+.0-9]+}
     tcpG {43.4}
-    syntax gcode
+    plane {}
+    methods {}
+    plain 1
+    end {}
+    callComp 0
 }

@@ -66,5 +66,43 @@ oo::class create ::fivax::dialect::sinumerik::Writer {
     skip {^\s*$}
     word {[A-Z][-+.0-9]+}
     tcpG {43.4}
-    syntax sinumerik
+    plane {}
+    methods ::fivax::dialect::sinumerik::Reader
+    plain 1
+    end {}
+    callComp 0
+}
+
+# The reader's forms of this control (mixed into ::fivax::verify::Checker).
+oo::class create ::fivax::dialect::sinumerik::Reader {
+    variable S
+
+    # Returns the line with its keywords read: SUPA as G53,
+    # TRAORI / TRAFOOF switching TCP, ORIWKS / ORIAXES (the defaults the
+    # reader assumes) dropped, CYCLE800(..) setting the work plane (mode
+    # 57: rotations about X, Y', Z'') and CYCLE800() ending it.
+    method Translate {line} {
+        set text $line
+        if {[string first ";" $text] >= 0} {
+            set comment [string range $text [string first ";" $text] end]
+            set text [string range $text 0 [string first ";" $text]-1]
+        } else {
+            set comment ""
+        }
+        regsub -all {\mSUPA\M} $text G53 text
+        if {[regsub -all {\mTRAORI\M} $text "" text]} {my SetTcp 1}
+        if {[regsub -all {\mTRAFOOF\M} $text "" text]} {my SetTcp 0}
+        regsub -all {\m(ORIWKS|ORIAXES)\M} $text "" text
+        if {[regexp {\mCYCLE800\(([^)]*)\)} $text -> args]} {
+            set v [split $args ,]
+            if {[string trim $args] eq ""} {
+                my EndFrame
+            } elseif {[llength $v] >= 10 && [string trim [lindex $v 3]] eq "57"} {
+                my SetFrame xyz [lmap x [lrange $v 7 9] {string trim $x}] \
+                    [lmap x [lrange $v 4 6] {string trim $x}]
+            }
+            regsub {\mCYCLE800\([^)]*\)} $text "" text
+        }
+        return "$text$comment"
+    }
 }
