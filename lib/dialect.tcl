@@ -10,7 +10,7 @@
 #	Errors: {FIVAX OPTION VALUE} for a name that is no controller.
 
 namespace eval ::fivax::dialect {
-    namespace export names writer reader check
+    namespace export names writer reader check default
     namespace ensemble create -prefixes 0
     # name -> {writer dict reader dict}, in the order of the file names
     variable Registry {}
@@ -28,6 +28,17 @@ proc ::fivax::dialect::define {name writer reader} {
 proc ::fivax::dialect::names {} {
     variable Registry
     dict keys $Registry
+}
+
+# ::fivax::dialect::default --
+#	Returns the controller of a machine file without 'controller': the
+#	one whose writer table says default 1, or "" when no file does.
+proc ::fivax::dialect::default {} {
+    variable Registry
+    dict for {name entry} $Registry {
+        if {[dict get $entry writer default]} {return $name}
+    }
+    return ""
 }
 
 # ::fivax::dialect::writer -- Returns the writer table of controller name (see check).

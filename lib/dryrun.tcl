@@ -18,7 +18,7 @@
 #	                above its surface)
 #	    toollength  the program's tool length (its FIVAX TOOL comment)
 #	                differs from the tool table's
-#	    end         blocks after M2/M30/END PGM; a program that never ends
+#	    end         blocks after M2/M30 (or the reader's end); a program that never ends
 #	    unreadable  a word or block the Checker cannot interpret
 #
 #	The stock is a height map over the x-y of the workpiece frame. With
@@ -110,6 +110,7 @@ proc ::fivax::dryrun::run {machine lines args} {
     if {$controller eq ""} {set controller [dict get $machine controller]}
     array set R [list machine $machine opts $opts events {} moves {} \
         callComp [dict get [::fivax::dialect reader $controller -controller] callComp] \
+        endName [dict get [::fivax::dialect reader $controller -controller] endName] \
         tcpG [dict get [::fivax::dialect reader $controller -controller] tcpG] units [dict get $machine units] \
         offset "" length [dict get $machine tool_length] radius 0.0 \
         comp 0 spindle 0 speed "" coolant 0 spindleSaid 0 end 0 endSaid 0 \
@@ -131,7 +132,7 @@ proc ::fivax::dryrun::run {machine lines args} {
     } finally {
         $checker destroy
     }
-    if {!$R(end)} {Event $n end "the program never ends (no M2, M30 or END PGM)"}
+    if {!$R(end)} {Event $n end "the program never ends (no [join [concat M2 M30 $R(endName)] {, }])"}
     Geometry
     lsort -integer -index 0 $R(events)
 }

@@ -100,6 +100,11 @@ namespace eval ::fivax::output {
     #              cutcom): G41/G42/G40 with the register as D (GD), the
     #              same without D (G: the active edge's), R (the methods
     #              write it in their Motion and ArcLines), or {} none
+    #   form       the shape of a program, for tools/fuzz.tcl: regexps of
+    #              its first and closing lines ("" none), its block of
+    #              start modes, its end block, a dwell, and of the lines
+    #              after which X Y Z are no machine values (free: work
+    #              plane, TCP; "" none)
     #   words      the words distinctive of the controller: they occur in
     #              its file only (tests/dialects.test checks)
     # The G and M codes the layer writes, by the name Post Builder posts
@@ -714,7 +719,8 @@ oo::class create ::fivax::output::Writer {
     }
 
     # Returns what in the NC text ends the program in the dialect (the M
-    # code, RET, END PGM, %), outside its comments; "" when nothing does.
+    # code or the line its ends patterns find), outside its comments;
+    # "" when nothing does.
     method ProgramEnd {text} {
         lassign [dict get $S(dialect) ends] codes patterns
         set code [string toupper [regsub -all {\([^()]*\)} $text " "]]

@@ -66,6 +66,7 @@ namespace eval ::fivax::verify {
     #            Translate (the keywords are no such words)
     #   end      "" or a regexp of a line that ends the program (besides
     #            M2 and M30)
+    #   endName  what end finds, in words ("" none)
     #   callComp 1: a tool call switches length compensation on (the dry
     #            run's lengthcomp)
     # G codes whose meaning the checker follows (with the reader's plane

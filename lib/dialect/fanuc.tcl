@@ -28,6 +28,7 @@ oo::class create ::fivax::dialect::fanuc::Writer {
 }
 
 ::fivax::dialect::define fanuc {
+    default 1
     syntax gcode program O%04d percent 1 comment paren semicolon 0
     safety {G_cutcom 40 G_length 49 G_cycle 80} reset {G69} units {21 20}
     methods ::fivax::dialect::fanuc::Writer inverse 1
@@ -39,6 +40,8 @@ oo::class create ::fivax::dialect::fanuc::Writer {
     active {}
     ends {{2 30 99} {%}}
     cutcom GD
+    form {first {^%$} close {^%$} start {\mG2[01] G90\M} end {\mM(30|0?2)\M}
+        dwell {\mG0?4\M} free {G68\.2|G43\.4}}
     words {G43.4 G68.2 G53.1 fanuc Fanuc}
 } {
     comment {\(([^)]*)\)}
@@ -48,6 +51,6 @@ oo::class create ::fivax::dialect::fanuc::Writer {
     plane {68.2 53.1 zxz}
     methods {}
     plain 1
-    end {}
+    end {} endName {}
     callComp 0
 }

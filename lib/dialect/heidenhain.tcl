@@ -164,6 +164,7 @@ oo::class create ::fivax::dialect::heidenhain::Writer {
 }
 
 ::fivax::dialect::define heidenhain {
+    default 0
     syntax klartext program {} percent 0 comment numbered semicolon 1
     safety {} reset {{FUNCTION RESET TCPM} {PLANE RESET STAY}} units {MM INCH}
     methods ::fivax::dialect::heidenhain::Writer inverse 0
@@ -175,6 +176,8 @@ oo::class create ::fivax::dialect::heidenhain::Writer {
     active {}
     ends {{2 30} {{\mEND\s+PGM\M}}}
     cutcom R
+    form {first {^0 BEGIN PGM } close {^\d+ END PGM } start {BEGIN PGM}
+        end {\mM(30|0?2)\M} dwell {CYCL DEF 9\.} free {PLANE SPATIAL|TCPM}}
     words {{TOOL CALL} {CYCL DEF} {PLANE SPATIAL} {PLANE RESET} TCPM {BEGIN PGM} {END PGM}
         FMAX M91 heidenhain Heidenhain}
 } {
@@ -185,7 +188,7 @@ oo::class create ::fivax::dialect::heidenhain::Writer {
     plane {}
     methods ::fivax::dialect::heidenhain::Reader
     plain 0
-    end {^\s*(\d+\s+)?END PGM\M}
+    end {^\s*(\d+\s+)?END PGM\M} endName {END PGM}
     callComp 1
 }
 

@@ -49,6 +49,7 @@ oo::class create ::fivax::dialect::sinumerik::Writer {
 }
 
 ::fivax::dialect::define sinumerik {
+    default 0
     syntax gcode program {} percent 0 comment semicolon semicolon 1
     safety {G_cutcom 40} reset {TRAFOOF CYCLE800()} units {71 70}
     methods ::fivax::dialect::sinumerik::Writer inverse 1
@@ -60,6 +61,8 @@ oo::class create ::fivax::dialect::sinumerik::Writer {
     active {}
     ends {{2 17 30} {{\mRET\M}}}
     cutcom G
+    form {first {} close {} start {\mG7[01] G90\M} end {\mM(30|0?2)\M}
+        dwell {\mG0?4\M} free {CYCLE800|TRAORI}}
     words {TRAORI TRAFOOF ORIWKS ORIAXES CYCLE800 SUPA sinumerik Sinumerik}
 } {
     comment {;(.*)$}
@@ -69,7 +72,7 @@ oo::class create ::fivax::dialect::sinumerik::Writer {
     plane {}
     methods ::fivax::dialect::sinumerik::Reader
     plain 1
-    end {}
+    end {} endName {}
     callComp 0
 }
 
