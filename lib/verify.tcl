@@ -247,74 +247,23 @@ oo::class create ::fivax::verify::Checker {
     # Reads one NC line as read does (see there) and returns the values of
     # its dict as a list: joints pose space limit arc hole block moved F
     # words comments unknown (the post's check takes the first six, and
-    # words are gathered only when wantPairs is 1).
+    # words are gathered only when wantPairs is 1). Three phases: the
+    # line's words (Words), the modal state they change (GModes, then
+    # each word), the block's results (Arc, the hole's end state).
     method Read {line wantPairs} {
-        set comments {}
-        if {$S(plainText) && [regexp -- $S(lineRe) $line]} {
-            # plain words (every ISO block fivax writes): no comment, no keyword
-            set text $line
-            set plain 1
-            set skip [expr {[string first " " $line] < 0 && [regexp -- $S(skip) $line]}]
-        } else {
-            set text [my Translate $line]
-            if {[string first ( $text] >= 0 || [string first ";" $text] >= 0} {
-                foreach {- a b} [regexp -all -inline -- $S(comment) $text] {
-                    lappend comments [expr {$a ne "" ? $a : $b}]
-                }
-                regsub -all -- $S(comment) $text "" text
-            }
-            # a line of plain words is split at its spaces
-            set plain [expr {$S(lineRe) ne "" && [regexp -- $S(lineRe) $text]}]
-            set skip [expr {(!$plain && [string trim $text] eq "") || [regexp -- $S(skip) $line]}]
-        }
+        lassign [my Words $line] skip words comments unknown
         if {$skip} {
             return [list {*}[my State] {} {} 0 0 {} "" {} $comments {}]
         }
-        set unknown {}
-        if {$plain} {
-            set words [split $text " "]
-        } else {
-            set words [regexp -all -inline -- $S(word) $text]
-            set rest [string trim [regsub -all -- $S(word) $text ""]]
-            if {$rest ne ""} {lappend unknown text $rest}
+        lassign [my GModes $words] machineFrame planeSet dwell
+        if {$planeSet} {
+            my PlaneWords $words
+            return [list {*}[my State] {} {} 0 1 {} "" {} $comments {}]
         }
         set pairs {}
         set moved {}
         set limit {}
         set F ""
-        # G codes first: they decide what the axis words mean (most
-        # blocks have none)
-        set machineFrame 0
-        set planeSet 0
-        set dwell 0
-        if {[string first G $text] >= 0} {
-            foreach word [lsearch -all -inline -glob $words G*] {
-                set value [::fivax::verify::Number [string range $word 1 end]]
-                if {$value eq ""} continue
-                set g [expr {$value == round($value) ? int($value) : $value}]
-                if {$g in $S(CycleG)} {
-                    if {!$S(cycle)} {
-                        set S(initial) $S(Z)
-                        set S(bottom) $S(Z)
-                    }
-                    set S(cycle) 1
-                } elseif {$g in {98 99}} {
-                    set S(return) $g
-                } elseif {$g in {0 1 2 3 80}} {
-                    set S(cycle) 0
-                } elseif {$g == 53} {
-                    set machineFrame 1
-                } elseif {$g == $S(planeG)} {
-                    set planeSet 1
-                } elseif {$g == 4} {
-                    set dwell 1
-                }
-            }
-        }
-        if {$planeSet} {
-            my PlaneWords $words
-            return [list {*}[my State] {} {} 0 1 {} "" {} $comments {}]
-        }
         set hole 0
         set start [list $S(X) $S(Y) $S(Z)]
         set ijk {I 0.0 J 0.0 K 0.0}
@@ -371,37 +320,13 @@ oo::class create ::fivax::verify::Checker {
                 }
             }
             if {$letter in $S(rotaries)} {
-                # the value in radians (num rad, written out) against the limits
-                lassign $S(axis:$letter) key lo hi
-                set q [expr {$x * $S(pi) / 180.0}]
-                if {$q < $lo || $q > $hi} {
-                    incr S(limitViolations)
-                    lappend limit $letter
-                }
-                set S($key) $q
+                if {[my Rotary $letter $x]} {lappend limit $letter}
                 lappend moved $letter
                 continue
             }
             switch -exact -- $letter {
                 G {
-                    set g [expr {$x == round($x) ? int($x) : $x}]
-                    switch -exact -- $g {
-                        0 {set S(motion) 0}
-                        1 {set S(motion) 1}
-                        2 - 3 {set S(motion) $g}
-                        17 - 18 - 19 {set S(plane) $g}
-                        49 {set S(tcp) 0}
-                        69 {set S(frame) {}}
-                        93 {set S(mode) inverse}
-                        94 {set S(mode) direct}
-                        default {
-                            if {[lsearch -exact -real $S(tcpG) $g] >= 0} {
-                                set S(tcp) 1
-                            } elseif {$g ni $S(KnownG)} {
-                                lappend unknown G$g $word
-                            }
-                        }
-                    }
+                    lappend unknown {*}[my GWord $x $word]
                     set arcMode [expr {$S(motion) in {2 3}}]
                 }
                 F {
@@ -427,16 +352,7 @@ oo::class create ::fivax::verify::Checker {
         set arc {}
         if {$arcMode && [llength $moved]} {
             if {!$centreGiven} {lappend unknown "arc without I J K or R" G$S(motion)}
-            if {$radius ne ""} {
-                set centre [::fivax::verify::RadiusCentre $start [list $S(X) $S(Y) $S(Z)] \
-                    $radius $S(plane) $S(motion)]
-            } else {
-                # the centre from the start by I J K (incremental)
-                set centre [lmap c $start d [dict values $ijk] {
-                    expr {$c eq "" ? "" : $c + $d}
-                }]
-            }
-            set arc [list $start $centre $S(plane) $S(motion)]
+            set arc [my Arc $start $radius $ijk]
         }
         if {$hole} {
             set z $S(Z)
@@ -448,6 +364,124 @@ oo::class create ::fivax::verify::Checker {
             set state [my State]
         }
         list {*}$state $limit $arc $hole 1 $moved $F $pairs $comments $unknown
+    }
+
+    # Returns {skip words comments unknown} of NC line: skip 1 for a line
+    # that is no block (the reader's skip, nothing but comments), its
+    # words (the text split, after the controller's Translate and with
+    # its comments removed), the comment texts, and {text rest} in
+    # unknown for text that is no word.
+    method Words {line} {
+        set comments {}
+        if {$S(plainText) && [regexp -- $S(lineRe) $line]} {
+            # plain words (every ISO block fivax writes): no comment, no keyword
+            set skip [expr {[string first " " $line] < 0 && [regexp -- $S(skip) $line]}]
+            return [list $skip [split $line " "] {} {}]
+        }
+        set text [my Translate $line]
+        if {[string first ( $text] >= 0 || [string first ";" $text] >= 0} {
+            foreach {- a b} [regexp -all -inline -- $S(comment) $text] {
+                lappend comments [expr {$a ne "" ? $a : $b}]
+            }
+            regsub -all -- $S(comment) $text "" text
+        }
+        # a line of plain words is split at its spaces
+        set plain [expr {$S(lineRe) ne "" && [regexp -- $S(lineRe) $text]}]
+        set skip [expr {(!$plain && [string trim $text] eq "") || [regexp -- $S(skip) $line]}]
+        if {$plain} {return [list $skip [split $text " "] $comments {}]}
+        set unknown {}
+        set rest [string trim [regsub -all -- $S(word) $text ""]]
+        if {$rest ne ""} {lappend unknown text $rest}
+        list $skip [regexp -all -inline -- $S(word) $text] $comments $unknown
+    }
+
+    # Returns {machineFrame planeSet dwell} of a block's words: its G codes
+    # first (they decide what the axis words mean; most blocks have
+    # none): G53 (machine coordinates), the reader's plane G code, G4;
+    # canned cycles start (the initial level kept), G98/G99 set the
+    # return level, a motion code or G80 ends a cycle.
+    method GModes {words} {
+        set machineFrame 0
+        set planeSet 0
+        set dwell 0
+        foreach word [lsearch -all -inline -glob $words G*] {
+            set value [::fivax::verify::Number [string range $word 1 end]]
+            if {$value eq ""} continue
+            set g [expr {$value == round($value) ? int($value) : $value}]
+            if {$g in $S(CycleG)} {
+                if {!$S(cycle)} {
+                    set S(initial) $S(Z)
+                    set S(bottom) $S(Z)
+                }
+                set S(cycle) 1
+            } elseif {$g in {98 99}} {
+                set S(return) $g
+            } elseif {$g in {0 1 2 3 80}} {
+                set S(cycle) 0
+            } elseif {$g == 53} {
+                set machineFrame 1
+            } elseif {$g == $S(planeG)} {
+                set planeSet 1
+            } elseif {$g == 4} {
+                set dwell 1
+            }
+        }
+        list $machineFrame $planeSet $dwell
+    }
+
+    # Sets rotary letter to x (deg, kept in radians); returns 1 when the
+    # value is outside its limits (counted).
+    method Rotary {letter x} {
+        lassign $S(axis:$letter) key lo hi
+        # the value in radians (num rad, written out) against the limits
+        set q [expr {$x * $S(pi) / 180.0}]
+        set S($key) $q
+        if {$q < $lo || $q > $hi} {
+            incr S(limitViolations)
+            return 1
+        }
+        return 0
+    }
+
+    # Follows the G code x (the word word) in the modal state: motion,
+    # plane, TCP, frame and feed mode; returns {G<x> word} for a G code
+    # the checker does not follow, else {}.
+    method GWord {x word} {
+        set g [expr {$x == round($x) ? int($x) : $x}]
+        switch -exact -- $g {
+            0 {set S(motion) 0}
+            1 {set S(motion) 1}
+            2 - 3 {set S(motion) $g}
+            17 - 18 - 19 {set S(plane) $g}
+            49 {set S(tcp) 0}
+            69 {set S(frame) {}}
+            93 {set S(mode) inverse}
+            94 {set S(mode) direct}
+            default {
+                if {[lsearch -exact -real $S(tcpG) $g] >= 0} {
+                    set S(tcp) 1
+                } elseif {$g ni $S(KnownG)} {
+                    return [list G$g $word]
+                }
+            }
+        }
+        return {}
+    }
+
+    # Returns the arc {start centre plane dir} of an arc block from start
+    # (the modal X Y Z before it) to the modal X Y Z: the centre by the
+    # radius (not "") or the start plus ijk (I J K offsets).
+    method Arc {start radius ijk} {
+        if {$radius ne ""} {
+            set centre [::fivax::verify::RadiusCentre $start [list $S(X) $S(Y) $S(Z)] \
+                $radius $S(plane) $S(motion)]
+        } else {
+            # the centre from the start by I J K (incremental)
+            set centre [lmap c $start d [dict values $ijk] {
+                expr {$c eq "" ? "" : $c + $d}
+            }]
+        }
+        list $start $centre $S(plane) $S(motion)
     }
 
     # Reads a block of the reader's plane G code (words): the work plane's
