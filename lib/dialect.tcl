@@ -3,14 +3,17 @@
 #	file in lib/dialect/ (<name>.tcl, shipped code of this library) that
 #	calls define once with what the output layer writes (its writer
 #	table, see lib/output.tcl) and what the checker accepts (its reader
-#	table, see lib/verify.tcl). The list of controllers is the list of
-#	those files: removing one removes its controller from every option
-#	list, help text, the checker and the dialect tests. The files are
-#	found beside this library (never in the working directory).
+#	table, see lib/verify.tcl); what the control writes or reads beyond
+#	the generic ISO G code is in the same file, as the methods of its
+#	Writer and Reader classes (::fivax::dialect::<name>::Writer, ...)
+#	that the tables' methods key names. The list of controllers is the
+#	list of those files: removing one removes its controller from every
+#	option list, help text, the checker and the dialect tests. The files
+#	are found beside this library (never in the working directory).
 #	Errors: {FIVAX OPTION VALUE} for a name that is no controller.
 
 namespace eval ::fivax::dialect {
-    namespace export names writer reader check
+    namespace export names writer reader check default
     namespace ensemble create -prefixes 0
     # name -> {writer dict reader dict}, in the order of the file names
     variable Registry {}
@@ -28,6 +31,17 @@ proc ::fivax::dialect::define {name writer reader} {
 proc ::fivax::dialect::names {} {
     variable Registry
     dict keys $Registry
+}
+
+# ::fivax::dialect::default --
+#	Returns the controller of a machine file without 'controller': the
+#	one whose writer table says default 1, or "" when no file does.
+proc ::fivax::dialect::default {} {
+    variable Registry
+    dict for {name entry} $Registry {
+        if {[dict get $entry writer default]} {return $name}
+    }
+    return ""
 }
 
 # ::fivax::dialect::writer -- Returns the writer table of controller name (see check).

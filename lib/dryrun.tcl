@@ -12,13 +12,13 @@
 #	    rapid       a rapid whose cutter passes below the stock's surface
 #	    collision   shank, holder or spindle nose through the stock, or a
 #	                body below the table's top
-#	    lengthcomp  G43 / TCP (G43.4, the reader's tcpG) with H in a block with no move along Z
+#	    lengthcomp  G43 / TCP (the reader's tcpG) with H in a block with no move along Z
 #	    mode        TCP or a work plane switched with the tool at cutting
 #	                depth (tip below the stock's top, less than depthClear
 #	                above its surface)
 #	    toollength  the program's tool length (its FIVAX TOOL comment)
 #	                differs from the tool table's
-#	    end         blocks after M2/M30/END PGM; a program that never ends
+#	    end         blocks after M2/M30 (or the reader's end); a program that never ends
 #	    unreadable  a word or block the Checker cannot interpret
 #
 #	The stock is a height map over the x-y of the workpiece frame. With
@@ -109,7 +109,8 @@ proc ::fivax::dryrun::run {machine lines args} {
     set controller [dict get $opts -controller]
     if {$controller eq ""} {set controller [dict get $machine controller]}
     array set R [list machine $machine opts $opts events {} moves {} \
-        klartext [expr {[dict get [::fivax::dialect writer $controller -controller] syntax] eq "klartext"}] \
+        callComp [dict get [::fivax::dialect reader $controller -controller] callComp] \
+        endName [dict get [::fivax::dialect reader $controller -controller] endName] \
         tcpG [dict get [::fivax::dialect reader $controller -controller] tcpG] units [dict get $machine units] \
         offset "" length [dict get $machine tool_length] radius 0.0 \
         comp 0 spindle 0 speed "" coolant 0 spindleSaid 0 end 0 endSaid 0 \
@@ -131,7 +132,7 @@ proc ::fivax::dryrun::run {machine lines args} {
     } finally {
         $checker destroy
     }
-    if {!$R(end)} {Event $n end "the program never ends (no M2, M30 or END PGM)"}
+    if {!$R(end)} {Event $n end "the program never ends (no [join [concat M2 M30 $R(endName)] {, }])"}
     Geometry
     lsort -integer -index 0 $R(events)
 }
@@ -391,15 +392,15 @@ proc ::fivax::dryrun::Words {words moved n} {
 
 # ::fivax::dryrun::Tool --
 #	Follows the tool the follower R(tooling) saw at line n: its notes as
-#	events, a tool call (the spindle stops; Klartext's TOOL CALL switches
-#	length compensation on), its length and radius.
+#	events, a tool call (the spindle stops; where the reader's callComp
+#	is 1 it switches length compensation on), its length and radius.
 proc ::fivax::dryrun::Tool {checker n} {
     variable R
     foreach note [dict get $R(tooling) notes] {Event $n {*}$note}
     if {[dict get $R(tooling) called]} {
         set R(spindle) 0
         set R(spindleSaid) 0
-        if {$R(klartext)} {set R(comp) 1}
+        if {$R(callComp)} {set R(comp) 1}
     }
     set len [dict get $R(tooling) length]
     if {$len ne "" && $len != $R(length)} {SetLength $checker $len}
@@ -428,8 +429,8 @@ proc ::fivax::dryrun::tooling {tools override} {
 
 # ::fivax::dryrun::toolStep --
 #	Returns the follower state after one NC line read by a verify Checker
-#	(blk: its read dict): its tool calls (M6 calls the last T; the
-#	Checker reads Klartext's TOOL CALL n as T n M6), then
+#	(blk: its read dict): its tool calls (M6 calls the last T; a
+#	Checker's Translate reads a tool call of another syntax as T n M6), then
 #	its comments "FIVAX TOOL n LENGTH L ?RADIUS R ?CORNER r??" (the tool
 #	the program's X Y Z were computed for; CORNER: a program compensated
 #	for that cutter, -cutcom3d post). Keys:

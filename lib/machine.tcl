@@ -35,7 +35,7 @@ namespace eval ::fivax::machine {
     # Top-level keys and their defaults ("" default with required = 1).
     variable topDefaults {
         name {} description {} units mm family chain alpha 0 y_H 0 pivot 0
-        tool_length 0 table_offset {0 0 0} axes {} controller fanuc output {}
+        tool_length 0 table_offset {0 0 0} axes {} controller {} output {}
         clearance 50 safe_z {} feed_min 1 feed_max 20000
         inverse_time_max 9999 max_swing 180 work_offset 54 tool_change_z 0
         home_rotaries 0 entry_feed {} tcp 0 tcp_codes {} swivel_record TC1
@@ -153,6 +153,7 @@ proc ::fivax::machine::parse {text sourceName} {
     set family [Choice $src family [Get $raw family] {headhead chain}]
     dict set m family $family
     set controller [Get $raw controller]
+    if {$controller eq ""} {set controller [DefaultController $src]}
     if {![regexp {^[A-Za-z0-9_.-]+$} $controller]} {
         ::fivax::Fail MACHINE VALUE "$src: 'controller' is not a single word: $controller"
     }
@@ -254,6 +255,19 @@ proc ::fivax::machine::parse {text sourceName} {
     dict set m limits [Limits $m]
     dict set m bounds [Bounds [dict get $m limits]]
     return $m
+}
+
+# ::fivax::machine::DefaultController --
+#	Returns the controller of a machine file src without one: the
+#	registered default (see ::fivax::dialect default).
+#	Errors: {FIVAX MACHINE MISSING} when no controller file declares one.
+proc ::fivax::machine::DefaultController {src} {
+    set name [::fivax::dialect default]
+    if {$name eq ""} {
+        ::fivax::Fail MACHINE MISSING "$src: missing key 'controller' (one of\
+            [join [::fivax::dialect names] {, }])"
+    }
+    return $name
 }
 
 # ::fivax::machine::Get -- Returns raw's value for key, or its default.

@@ -188,7 +188,7 @@ oo::class create ::fivax::nc::Writer {
     # (numbered 0: the words of a line built around them, never numbered);
     # "" when every word was left out (unchanged modal word, suppressed,
     # or empty value). around {before after}: text around the words,
-    # within the number (Klartext's "L <words> R0 F.."), when there are
+    # within the number (as "L <words> R0 F.."), when there are
     # any. Only words written update the modal memory, after the last
     # word: a block that fails changes none of it. The empty name ""
     # stands for literal text, written as it is every time.
@@ -335,7 +335,7 @@ oo::class create ::fivax::nc::Writer {
 
     # Returns number x within address name's MIN/MAX as a block would
     # write it (truncated, or after a warning as it is; {FIVAX NC RANGE}
-    # for abort): for text that goes out without a block (Klartext).
+    # for abort): for text that goes out without a block.
     method limit {name x} {
         if {![info exists Addr($name)]} {
             ::fivax::Fail NC ADDRESS "unknown address \"$name\""

@@ -1,8 +1,8 @@
 # output.tcl --
 #	The output layer: turns the planner's neutral move records and the
 #	post's program events (start, tool change, spindle, coolant, comments,
-#	end) into NC blocks of one controller dialect. It alone knows address
-#	names, G and M codes, Klartext words, inverse-time F, where length
+#	end) into NC blocks of one controller dialect. It alone (with the
+#	controllers' files) knows address names, G and M codes, inverse-time F, where length
 #	compensation and TCP go, how a tilted work plane and an arc are
 #	written; the blocks are built by an nc Writer (lib/nc.tcl). Returns
 #	text only: the host writes it.
@@ -17,9 +17,9 @@
 #
 #	Dialects are data (each controller's writer table, one file per
 #	controller in lib/dialect/): what differs between controllers is
-#	looked up there, not written as a copy of the code. Two syntaxes read
-#	the table: ISO G-code and Klartext (numbered lines from 0, L/CC/C
-#	blocks, signed words, no G codes). ../shared/spec/dialects.md gives
+#	looked up there, not written as a copy of the code; the forms of a
+#	controller's own are methods of a class in its file, mixed into the
+#	Writer (the table's methods key). ../shared/spec/dialects.md gives
 #	what each control must receive.
 #	Errors: {FIVAX OPTION ...}, {FIVAX OUTPUT <DETAIL>}.
 
@@ -56,61 +56,62 @@ namespace eval ::fivax::output {
 
     # The writer table of each controller (lib/dialect/<name>.tcl, see
     # lib/dialect.tcl) has the keys:
-    #   syntax     gcode or klartext
+    #   syntax     gcode or klartext (numbered lines from 0, no leader of
+    #              N, no G codes, the axis addresses KX KY KZ K4 K5)
+    #   methods    "" or the class of the controller's own forms, mixed
+    #              into the Writer: it overrides the methods that write
+    #              them (MachineZ, ChangeTool, Register, LengthWords,
+    #              Motion, ArcLines, PlaneLines, PlaneOffLines, EndLines,
+    #              ...; PlaneLines and PlaneOffLines where plane is set)
     #   program    the program-number line format ("" for none: the program
     #              comment stands alone, "(PROGRAM n)" when empty)
     #   percent    1: % lines open and close the program
-    #   comment    the comment form: paren "(text)", semicolon "; text"
-    #              (G-code), or numbered "n ; text" (Klartext)
+    #   comment    the comment form: paren "(text)", semicolon "; text",
+    #              or numbered "n ; text"
     #   semicolon  1: ";" starts a comment to the end of the line
     #   safety     the words of the safety line ({} none)
     #   reset      the lines after it that cancel a work plane and TCP a
     #              previous program may have left on
-    #   units      the G codes of mm and inch
-    #   length     how tool length compensation comes on: G43 (G43 H with
-    #              the first Z move after a tool change or a Z up in
-    #              machine coordinates), D (D1 with that Z move), call
-    #              (Klartext TOOL CALL)
-    #   machineZ   Z up in machine coordinates: G53 (G0 G49 G53 Z), SUPA
-    #              (G0 SUPA Z D0), M91 (L Z R0 FMAX M91)
+    #   units      the unit words of mm and inch
     #   inverse    1: inverse-time feed (G93) exists
-    #   tcp        {on LINES off LINES} of TCP mode: one G code (Fanuc's
-    #              G43.4: on the first X Y Z block after a tool change,
-    #              with H), else the
-    #              lines written before that block; off: the lines before
-    #              the Z up (Fanuc's G49 alone: the Z up then carries no
-    #              G49 of its own); {} when the control has
-    #              none of its own (LinuxCNC: the machine's tcp_codes)
-    #   plane      tilted work plane: g68.2, cycle800, spatial, or {} (none:
-    #              the planner writes the rotaries and machine coordinates)
+    #   tcp        {on LINES off LINES} of TCP mode: one G code (on the
+    #              first X Y Z block after a tool change, with H), else
+    #              the lines written before that block; off: the lines
+    #              before the Z up (a G49 alone: the Z up then carries no
+    #              G49 of its own); {} when the control has none of its
+    #              own (the machine's tcp_codes M codes)
+    #   plane      tilted work plane: the angle convention of its
+    #              PlaneLines (see lib/plane.tcl), or {} (none: the
+    #              planner writes the rotaries and machine coordinates)
     #   arcs       the planes native arcs are written in ({} none), and
     #              helix 1 when a helix is
-    #   dwell      a dwell time: P_ms (milliseconds), P_s or F_dwell
-    #              (seconds, G4 F), cycl9 (Klartext cycle 9)
+    #   dwell      the address of a dwell time: P_ms (milliseconds), P_s
+    #              or F_dwell (seconds), {} (the methods write dwell)
     #   cycles     canned cycle G codes by NX cycle event; a cycle the
     #              control lacks is expanded into moves by the planner
     #   letters    word letters an INSERT may use besides the machine's
-    #              axes (N and O are the post's); {} for none (Klartext:
-    #              INSERT text is always a comment unless -insert verbatim)
+    #              axes (N and O are the post's); {} for none (INSERT
+    #              text is always a comment unless -insert verbatim)
     #   active     comment words the controller would act on (defused)
     #   ends       what ends the program in a line of NC text: {M codes,
     #              list of regexps} (an INSERT holding one is an error, see
     #              literal)
     #   cutcom     2D cutter compensation (CUTCOM/LEFT|RIGHT|OFF, see
     #              cutcom): G41/G42/G40 with the register as D (GD), the
-    #              same without D (G: Sinumerik's active D1 is the edge),
-    #              Klartext RL/RR/R0 in the L and C blocks (R), or {}
-    #              none (LinuxCNC 2.9: its G41/G42 offset by the tool
-    #              table's diameter, twice the radius on a tool centre
-    #              path, and its interpreter refuses such a program)
-    # The angle convention of each work-plane form (see lib/plane.tcl).
-    variable PlaneAngles {g68.2 zxz cycle800 xyz spatial spatial}
+    #              same without D (G: the active edge's), R (the methods
+    #              write it in their Motion and ArcLines), or {} none
+    #   form       the shape of a program, for tools/fuzz.tcl: regexps of
+    #              its first and closing lines ("" none), its block of
+    #              start modes, its end block, a dwell, and of the lines
+    #              after which X Y Z are no machine values (free: work
+    #              plane, TCP; "" none)
+    #   words      the words distinctive of the controller: they occur in
+    #              its file only (tests/dialects.test checks)
     # The G and M codes the layer writes, by the name Post Builder posts
     # keep them under (the variable mom_sys_<name>, which the templates of
-    # a .def read; see sysVars): gcode those only the G-code syntax writes
-    # (Klartext has no G codes, a TOOL CALL for M6, STOP for M0), any
-    # those every dialect writes (Klartext in L blocks). The methods look
-    # them up here (Code).
+    # a .def read; see sysVars): gcode those only the G-code syntax writes,
+    # any those every dialect writes. The methods look them up here
+    # (Code).
     variable Codes {
         gcode {
             rapid_code 0 linear_code 1 circle_code(CLW) 2 circle_code(CCLW) 3
@@ -201,7 +202,7 @@ proc ::fivax::output::MachineController {machine} {
 
 # ::fivax::output::Leaders --
 #	Returns the leader of each word a .def's [$mom_sys_leader(NAME)] may
-#	name, by NAME: X Y Z, N (none in Klartext: klartext 1), and
+#	name, by NAME: X Y Z, N (none in the klartext syntax: klartext 1), and
 #	fourth_axis, fifth_axis, the letters of machine's rotaries in output
 #	order (the fourth axis word first).
 proc ::fivax::output::Leaders {machine klartext} {
@@ -229,10 +230,11 @@ oo::class create ::fivax::output::Writer {
     # tool has been changed in; S(home): the rotaries stand at 0 (known
     # so, while their modal memory is empty: see RotariesHome);
     # S(feedMode): inverse or direct of the last feed block; S(cycle): the
-    # G code of the active canned cycle (0: none); S(pendingTool): the
-    # Klartext tool whose TOOL CALL waits for its spindle speed;
+    # G code of the active canned cycle (0: none); S(pendingTool): a
+    # tool whose change the dialect defers (see ToolCall);
     # S(planeOn): a work plane is active; S(register): the length register
-    # of the tool in the spindle; S(program): the Klartext program name;
+    # of the tool in the spindle; S(program): the program's name (where
+    # the dialect writes one);
     # S(arcPlane): the plane of the last arc; S(atSafe): nothing has moved
     # since the last Z up in machine coordinates; S(machine): the machine;
     # S(cutcomSide), S(cutcomReg): the 2D cutter compensation the CL asks
@@ -246,8 +248,8 @@ oo::class create ::fivax::output::Writer {
     # Fixed per writer: S(codes) (the Codes the dialect writes, see Code)
     # and, for the per-point path, S(moveCodes) (the G codes of rapid and
     # feed moves, G-code syntax), S(klartext) (the dialect's
-    # syntax is Klartext), S(tcpInBlock) (TCP comes on inside a motion
-    # block with H: the G code S(tcpG), Fanuc 43.4), S(xyzAddr) {X addr Y addr Z addr} and
+    # syntax is klartext), S(tcpInBlock) (TCP comes on inside a motion
+    # block with H: the G code S(tcpG)), S(xyzAddr) {X addr Y addr Z addr} and
     # S(rotAddr) {name addr step ...} (the rotaries in the order of their
     # words, see AxisAddresses; step:
     # the output resolution in degrees a rotary that rolls over is rounded
@@ -259,6 +261,10 @@ oo::class create ::fivax::output::Writer {
         set S(machine) $aMachine
         set S(cfg) $opts
         set S(dialect) [::fivax::dialect writer [dict get $S(cfg) -controller]]
+        # the controller's own forms (its file's methods class, see the table)
+        if {[dict get $S(dialect) methods] ne ""} {
+            oo::objdefine [self] mixin [dict get $S(dialect) methods]
+        }
         set names [::fivax::machine::rotaryNames $S(machine)]
         set i 0
         foreach axis [dict get $S(machine) chain] {
@@ -292,7 +298,7 @@ oo::class create ::fivax::output::Writer {
             set S(moveCodes) [list [my Code rapid_code] [my Code linear_code]]
         }
         set tcp [dict get $S(dialect) tcp]
-        # (a single G code, as Fanuc's G43.4: written with H in the block)
+        # (a single G code: written with H in the block)
         set S(tcpInBlock) [expr {$tcp ne "" && [regexp {^G([0-9.]+)$} [dict get $tcp on] -> S(tcpG)]}]
         set S(nc) [::fivax::nc::create -sequence 0 -warn [dict get $S(cfg) -warn]]
         my Define [dict get $S(cfg) -def]
@@ -304,8 +310,8 @@ oo::class create ::fivax::output::Writer {
     }
 
     # Defines the addresses of the .def def on the block writer, resolves
-    # their leaders and applies the decimal and numbering options. Klartext
-    # numbers every line from 0 in steps of 1, without a leader.
+    # their leaders and applies the decimal and numbering options. The
+    # klartext syntax numbers every line from 0 in steps of 1, without a leader.
     method Define {def} {
         set defined [::fivax::def::configure $S(nc) $def]
         foreach name $::fivax::output::Addresses {
@@ -402,19 +408,11 @@ oo::class create ::fivax::output::Writer {
     }
 
     # Returns the program-start lines: the dialect's program header
-    # carrying comment (Klartext: BEGIN PGM name), the safety line (no
-    # cutter, length or cycle compensation active), the resets of work
+    # carrying comment, the safety line (no cutter, length or cycle compensation active), the resets of work
     # plane and TCP (see Resets), units, absolute mode, feed mode and
     # plane, then the machine's work offset.
     method start {comment {name PART}} {
-        lassign [dict get $S(dialect) units] mm inch
-        set unit [expr {[dict get $S(machine) units] eq "inch" ? $inch : $mm}]
-        if {$S(klartext)} {
-            set S(program) [regsub -all {[^A-Za-z0-9_]} $name _]
-            if {$S(program) eq ""} {set S(program) PART}
-            return [concat [list [$S(nc) line "BEGIN PGM $S(program) $unit"] [my comment $comment]] \
-                [my Resets]]
-        }
+        set unit [my Unit]
         set lines {}
         if {[dict get $S(dialect) percent]} {lappend lines %}
         set format [dict get $S(dialect) program]
@@ -439,9 +437,8 @@ oo::class create ::fivax::output::Writer {
 
     # Returns the lines that cancel, at the program start, a work plane
     # and TCP a previous program may have left on: the dialect's reset
-    # lines (G69; TRAFOOF, CYCLE800(); FUNCTION RESET TCPM, PLANE RESET
-    # STAY), and the machine's TCP-off M code where the control has no TCP
-    # of its own (LinuxCNC's tcp_codes).
+    # lines (its table's reset), and the machine's TCP-off M code where the control has no TCP
+    # of its own (tcp_codes).
     method Resets {} {
         set lines [lmap text [dict get $S(dialect) reset] {$S(nc) line $text}]
         if {[dict get $S(dialect) tcp] eq "" && [llength [dict get $S(machine) tcp_codes]]} {
@@ -451,7 +448,7 @@ oo::class create ::fivax::output::Writer {
     }
 
     # Returns text as one comment line in the dialect's style (G-code:
-    # never numbered; Klartext: numbered, as every line is).
+    # never numbered; numbered: as every line is).
     method comment {text} {
         set text [my Sanitise $text]
         switch -exact -- [dict get $S(dialect) comment] {
@@ -464,27 +461,32 @@ oo::class create ::fivax::output::Writer {
     # Returns the tool change blocks for tool number: Z up to the
     # tool-change height (see safeZ), the rotaries to 0 unless they are
     # known to stand there (see RotariesHome), then the dialect's change
-    # (T M6; Klartext TOOL CALL, written with the spindle speed when it
-    # comes, see spindle); arms the length compensation (register adjust,
-    # 0: none; Sinumerik D1) for the next Z move, and TCP mode for the
+    # (ChangeTool: T M6); arms the length compensation (see Register)
+    # for the next Z move, and TCP mode for the
     # next X Y Z block. Modal memory is reset: everything is written
     # again after a tool change.
     method toolChange {number adjust} {
         set lines [my safeZ]
         if {![my RotariesHome]} {lappend lines {*}[my HomeRotaries]}
-        set length [dict get $S(dialect) length]
-        if {$length eq "call"} {
-            set S(pendingTool) $number
-        } else {
-            lappend lines [$S(nc) block [list T $number M [my Code tool_change_code]]]
-        }
+        lappend lines {*}[my ChangeTool $number]
         $S(nc) reset
         set S(home) 1
-        set S(register) [dict get [dict create G43 $adjust D 1 call 0] $length]
+        set S(register) [my Register $adjust]
         set S(length) $S(register)
         set S(loaded) 1
         set S(tcpArmed) [dict get $S(cfg) -tcp]
         return $lines
+    }
+
+    # Returns the blocks that change tool number in (T M6).
+    method ChangeTool {number} {
+        list [$S(nc) block [list T $number M [my Code tool_change_code]]]
+    }
+
+    # Returns the length register to activate with a tool's first Z move:
+    # adjust, the tool's (H).
+    method Register {adjust} {
+        return $adjust
     }
 
     # Returns 1 when both rotaries stand at home (see Home): as last
@@ -515,24 +517,21 @@ oo::class create ::fivax::output::Writer {
     method HomeRotaries {} {
         set home [my Home]
         $S(nc) force once [dict keys $home]
-        if {$S(klartext)} {return [list [$S(nc) block $home 1 {"L " " R0 FMAX"}]]}
         $S(nc) force once G_motion
         list [$S(nc) block [list G_motion [my Code rapid_code] {*}$home]]
     }
 
     # Returns the words that switch the armed length compensation on in a
-    # block with a Z move: G43 H<register>, or Sinumerik's D<n>.
+    # block with a Z move: G43 H<register>.
     method LengthWords {} {
         set n $S(length)
         set S(length) 0
-        if {[dict get $S(dialect) length] eq "D"} {return [list D $n]}
         list G_length 43 H $n
     }
 
     # Returns the blocks that take the spindle up to the machine's
     # tool-change height with TCP and length compensation cancelled (in
-    # machine coordinates: G0 G49 G53 Z<tool_change_z>, Sinumerik G0 SUPA
-    # Z D0, Klartext L Z R0 FMAX M91), ending an active cycle first. The
+    # machine coordinates, see MachineZ), ending an active cycle first. The
     # written Z is forgotten: the next Z is in the work frame, and the
     # length compensation (and TCP mode, once a tool is loaded) come on
     # again with it. Nothing when nothing has moved since the last one.
@@ -541,43 +540,29 @@ oo::class create ::fivax::output::Writer {
         set S(atSafe) 1
         set off [my TcpOff]
         set lines [concat [my CycleOff] $off]
-        set z [dict get $S(machine) tool_change_z]
-        switch -exact -- [dict get $S(dialect) machineZ] {
-            G53 {
-                $S(nc) force once {G_motion Z}
-                # (Fanuc's TCP off is G49 in a block of its own)
-                set g49 [expr {[llength $off] && [dict get $S(dialect) tcp] ne "" ? {} : {G_length 49}}]
-                lappend lines [$S(nc) block [list G_motion [my Code rapid_code] {*}$g49 G_machine 53 Z $z]]
-            }
-            SUPA {
-                $S(nc) force once {G_motion Z}
-                lappend lines [$S(nc) block [list G_motion [my Code rapid_code] "" SUPA Z $z D 0]]
-            }
-            M91 {
-                $S(nc) force once KZ
-                lappend lines [$S(nc) block [list KZ $z] 1 {"L " " R0 FMAX M91"}]
-            }
-        }
-        $S(nc) reset [expr {$S(klartext) ? "KZ" : "Z"}]
+        lappend lines {*}[my MachineZ [dict get $S(machine) tool_change_z] $off]
+        $S(nc) reset [dict get $S(xyzAddr) Z]
         set S(length) $S(register)
         set S(tcpArmed) [expr {$S(loaded) && [dict get $S(cfg) -tcp]}]
         return $lines
     }
 
-    # Returns the spindle-on blocks: speed (rpm), direction CLW or CCLW
-    # (Klartext: the waiting TOOL CALL with S, or TOOL CALL Z S, then M3).
+    # Returns the blocks of a Z move to z in machine coordinates, the
+    # length compensation cancelled: G0 G49 G53 Z (off: the TCP-off lines
+    # just written; a TCP G code of the dialect's own is cancelled by its
+    # off lines, the G49 alone, and the Z up then carries no G49).
+    method MachineZ {z off} {
+        $S(nc) force once {G_motion Z}
+        set g49 [expr {[llength $off] && [dict get $S(dialect) tcp] ne "" ? {} : {G_length 49}}]
+        list [$S(nc) block [list G_motion [my Code rapid_code] {*}$g49 G_machine 53 Z $z]]
+    }
+
+    # Returns the spindle-on blocks: speed (rpm), direction CLW or CCLW.
     # A start (the spindle not turning that way) writes S too, even when
     # it is in effect already.
     method spindle {speed direction} {
         set m [my Code spindle_direction_code([expr {$direction eq "CCLW" ? "CCLW" : "CLW"}])]
         set speed [expr {round($speed)}]
-        if {$S(klartext)} {
-            # the S of TOOL CALL is text: the .def's MIN/MAX of S bound it here
-            set speed [expr {round([$S(nc) limit S $speed])}]
-            set call [expr {$S(pendingTool) ne "" ? "TOOL CALL $S(pendingTool) Z" : "TOOL CALL Z"}]
-            set S(pendingTool) ""
-            return [concat [list [$S(nc) line "$call S$speed"]] [my KlartextM [list M_spindle $m]]]
-        }
         if {[$S(nc) value M_spindle] ne $m} {$S(nc) force once S}
         concat [my CycleOff] [list [$S(nc) block [list S $speed M_spindle $m]]]
     }
@@ -585,7 +570,6 @@ oo::class create ::fivax::output::Writer {
     # Returns the spindle-off block.
     method spindleOff {} {
         set words [list M_spindle [my Code spindle_direction_code(OFF)]]
-        if {$S(klartext)} {return [my KlartextM $words]}
         concat [my CycleOff] [list [$S(nc) block $words]]
     }
 
@@ -593,34 +577,24 @@ oo::class create ::fivax::output::Writer {
     # other: M8).
     method coolant {mode} {
         set m [my Code coolant_code([expr {$mode eq "MIST" ? "MIST" : "ON"}])]
-        if {$S(klartext)} {return [my KlartextM [list M_coolant $m]]}
         list [$S(nc) block [list M_coolant $m]]
     }
 
     # Returns the coolant-off block.
     method coolantOff {} {
         set words [list M_coolant [my Code coolant_code(OFF)]]
-        if {$S(klartext)} {return [my KlartextM $words]}
         list [$S(nc) block $words]
     }
 
-    # Returns the program stop block (optional: M1, else M0; Klartext STOP).
+    # Returns the program stop block (optional: M1, else M0).
     method stop {optional} {
-        if {$S(klartext)} {
-            return [list [$S(nc) line [expr {$optional ? "L M[my Code optional_stop_code]" : "STOP"}]]]
-        }
         set code [my Code [expr {$optional ? "optional_stop_code" : "program_stop_code"}]]
         concat [my CycleOff] [list [$S(nc) block [list M $code]]]
     }
 
     # Returns the dwell blocks for seconds (G4 P or F in the dialect's
-    # unit; Klartext cycle 9).
+    # unit).
     method dwell {seconds} {
-        if {[dict get $S(dialect) dwell] eq "cycl9"} {
-            # the time is text: bounded by the MIN/MAX of the seconds address P_s
-            return [list [$S(nc) line "CYCL DEF 9.0 DWELL TIME"] \
-                [$S(nc) line "CYCL DEF 9.1 DWELL [::fivax::num::fixed [$S(nc) limit P_s $seconds] 3]"]]
-        }
         concat [my CycleOff] [list [$S(nc) block [concat {G_dwell 4} [my DwellWords $seconds]]]]
     }
 
@@ -650,8 +624,8 @@ oo::class create ::fivax::output::Writer {
         list [$S(nc) block {G_cycle 80}]
     }
 
-    # Returns the lines that end TCP mode when it is on (none for Fanuc:
-    # the G49 of the next Z up ends G43.4).
+    # Returns the lines that end TCP mode when it is on (none for a TCP G
+    # code with no off lines: the G49 of the next Z up ends it).
     method TcpOff {} {
         set S(tcpArmed) 0
         if {!$S(tcpOn)} {return {}}
@@ -663,8 +637,8 @@ oo::class create ::fivax::output::Writer {
     }
 
     # Returns the lines that start TCP mode before a block writing any of
-    # X Y Z in axes when TCP is armed, and {} (Fanuc's G43.4 goes into
-    # that block itself: see move).
+    # X Y Z in axes when TCP is armed, and {} (a TCP G code goes into
+    # that block itself: see Motion).
     method TcpOn {axes} {
         if {!$S(tcpArmed) || ![llength [lmap a {X Y Z} {if {$a in $axes} {set a} else continue}]]
                 || $S(tcpInBlock)} {
@@ -745,7 +719,8 @@ oo::class create ::fivax::output::Writer {
     }
 
     # Returns what in the NC text ends the program in the dialect (the M
-    # code, RET, END PGM, %), outside its comments; "" when nothing does.
+    # code or the line its ends patterns find), outside its comments;
+    # "" when nothing does.
     method ProgramEnd {text} {
         lassign [dict get $S(dialect) ends] codes patterns
         set code [string toupper [regsub -all {\([^()]*\)} $text " "]]
@@ -784,7 +759,7 @@ oo::class create ::fivax::output::Writer {
     }
 
     # Returns the blocks of the move record rec (see ::fivax::motion
-    # flush): G0 or G1 (Klartext L with FMAX or F), length compensation
+    # flush): G0 or G1 (see Motion), length compensation
     # with the first Z move after a tool change, TCP with the first X Y Z
     # move, G93/G94 and F for feed moves, and the axes in its write list
     # in machine units and degrees (a rotary that rolls over written in
@@ -809,27 +784,17 @@ oo::class create ::fivax::output::Writer {
         if {$S(cycle)} {set lines [my CycleOff]}
         set isFeed [expr {$kind eq "feed"}]
         if {$S(tcpArmed)} {lappend lines {*}[my TcpOn $write]}
-        if {$S(klartext)} {
-            # L with the changed axes, R0, and FMAX or F (mm/min; a feed
-            # block after a rapid states F again); the waiting TOOL CALL
-            # first
-            if {$S(pendingTool) ne ""} {lappend lines {*}[my ToolCall]}
-            set words [::fivax::output::AxisWords {} $rec $S(xyzAddr) $S(rotAddr)]
-            set radius [my KlartextRadius [my CutcomStep $rec $isFeed]]
-            if {$isFeed} {
-                if {$S(feedMode) ne "feed"} {$S(nc) force once KF}
-                set S(feedMode) feed
-                set tail [string trimright "$radius [$S(nc) block [list KF [dict get $rec rate]] 0]"]
-            } else {
-                set S(feedMode) rapid
-                set tail "$radius FMAX"
-            }
-            lappend lines [$S(nc) block $words 1 [list "L " " $tail"]]
-            return $lines
-        }
+        lappend lines {*}[my Motion $rec $isFeed]
+    }
+
+    # Returns the block of the straight move record rec (a feed when
+    # isFeed, else a rapid): G0 or G1, length compensation or a TCP G
+    # code with the first Z move, cutter compensation, G93/G94 and F.
+    method Motion {rec isFeed} {
+        set write [dict get $rec write]
         set words [list G_motion [lindex $S(moveCodes) $isFeed]]
         if {$S(tcpArmed) && $S(tcpInBlock) && "Z" in $write} {
-            # TCP on (Fanuc): G43.4 H with the first Z block (the
+            # TCP on by a G code: it with H in the first Z block (the
             # approach's X Y Z, see ::fivax::motion First)
             lappend words G_length $S(tcpG) H $S(length)
             set S(length) 0
@@ -858,7 +823,7 @@ oo::class create ::fivax::output::Writer {
             lappend words $feed
             lappend words [dict get $rec rate]
         }
-        lappend lines [$S(nc) block $words]
+        list [$S(nc) block $words]
     }
 
     # --- 2D cutter compensation (CUTCOM) ---------------------------------
@@ -873,7 +838,7 @@ oo::class create ::fivax::output::Writer {
 
     # Sets the 2D cutter compensation the CL asks for: side LEFT, RIGHT or
     # OFF, register the D register (0: none written). It comes on with the
-    # next feed move that fits (G41/G42, Klartext RL/RR; the control's
+    # next feed move that fits (G41/G42, or the dialect's; the control's
     # approach move) and goes off with the next move (G40, R0).
     method cutcom {side register} {
         set S(cutcomSide) [expr {$side in {LEFT RIGHT} ? $side : ""}]
@@ -965,52 +930,27 @@ oo::class create ::fivax::output::Writer {
         return $words
     }
 
-    # Returns the Klartext radius word of side: RL, RR or R0.
-    method KlartextRadius {side} {
-        dict get {LEFT RL RIGHT RR {} R0} $side
-    }
-
-    # Returns the Klartext line "L M.." of the M words (through the modal
-    # memory: nothing when they are in effect already).
-    method KlartextM {words} {
-        set text [$S(nc) block $words 0]
-        if {$text eq ""} {return {}}
-        # (the tool comes first: M8 before its TOOL CALL would run the
-        # coolant through the tool change)
-        set lines [my ToolCall]
-        lappend lines [$S(nc) line "L $text"]
-    }
-
-    # Returns the waiting Klartext TOOL CALL (without a speed), or nothing.
+    # Returns the lines of a tool change the dialect defers to its
+    # spindle speed or first move (see ChangeTool): none here.
     method ToolCall {} {
-        if {$S(pendingTool) eq ""} {return {}}
-        set line [$S(nc) line "TOOL CALL $S(pendingTool) Z"]
-        set S(pendingTool) ""
-        list $line
+        return {}
     }
 
     # Returns the blocks of an arc record (kind arc: start, end axes,
     # centre, plane 17/18/19, dir 2 clockwise / 3 counter-clockwise about
-    # the plane's normal, feed): G17..G19 G2/G3 with the end and the
-    # centre from the start as I J K; Klartext CC and C DR-/DR+.
+    # the plane's normal, feed), see ArcLines.
     method Arc {rec} {
         set S(atSafe) 0
-        set lines [concat [my CycleOff] [my ToolCall]]
+        concat [my CycleOff] [my ToolCall] [my ArcLines $rec]
+    }
+
+    # Returns the block of arc record rec: G17..G19 G2/G3 with the end and
+    # the centre from the start as I J K (or R, see ArcRadius).
+    method ArcLines {rec} {
         set plane [dict get $rec plane]
         lassign [dict get $rec start] sx sy sz
         lassign [dict get $rec center] cx cy cz
         set dir [dict get $rec dir]
-        if {$S(klartext)} {
-            lappend lines [$S(nc) line "CC [$S(nc) block [list KCX $cx KCY $cy] 0]"]
-            if {$S(feedMode) ne "feed"} {$S(nc) force once KF}
-            set S(feedMode) feed
-            $S(nc) force once {KX KY}
-            set xy [$S(nc) block [list KX [dict get $rec axes X] KY [dict get $rec axes Y]] 0]
-            set words [list C $xy DR[expr {$dir == 2 ? "-" : "+"}] [my KlartextRadius $S(cutcomOn)] \
-                [$S(nc) block [list KF [dict get $rec rate]] 0]]
-            lappend lines [$S(nc) line [join [lsearch -all -inline -not -exact $words ""]]]
-            return $lines
-        }
         set offsets [dict get {17 {I J} 18 {I K} 19 {J K}} $plane]
         # centre offsets from the start as written (rounded)
         set d [$S(nc) decimals X]
@@ -1033,7 +973,7 @@ oo::class create ::fivax::output::Writer {
             }
         }
         lappend words F [dict get $rec rate]
-        lappend lines [$S(nc) block $words]
+        list [$S(nc) block $words]
     }
 
     # Returns the signed radius R of arc record rec from the written start:
@@ -1057,33 +997,13 @@ oo::class create ::fivax::output::Writer {
 
     # Returns the blocks that tilt the work plane of a plane record
     # (matrix R: columns X' Y' Z', origin O, seq: the sign the control's
-    # tilt takes): Z up, then Fanuc G68.2 X Y Z I J K (Euler ZXZ) + G53.1;
-    # Sinumerik CYCLE800 (mode 57);
-    # Klartext PLANE SPATIAL .. TURN MB MAX FMAX SEQ; the length
-    # compensation again with the next Z (G43 H, D). The rotaries turn
-    # without being written: their modal memory is cleared.
+    # tilt takes): Z up, then the dialect's work plane (its methods'
+    # PlaneLines, with the angles in the convention of its table's plane
+    # key); the length compensation again with the next Z. The rotaries
+    # turn without being written: their modal memory is cleared.
     method PlaneOn {rec} {
-        set form [dict get $S(dialect) plane]
-        set angles [::fivax::plane::angles [dict get $::fivax::output::PlaneAngles $form] \
-            [dict get $rec matrix]]
-        lassign [dict get $rec origin] ox oy oz
-        set lines [concat [my safeZ] [my ToolCall]]
-        switch -exact -- $form {
-            g68.2 {
-                lassign $angles i j k
-                lappend lines [$S(nc) block [list G_rot 68.2 X $ox Y $oy Z $oz E_i $i E_j $j E_k $k]] \
-                    [$S(nc) block {G_tilt 53.1}]
-            }
-            cycle800 {
-                set a [lmap v [concat [list $ox $oy $oz] $angles] {::fivax::num::fixed $v 4}]
-                lassign $a x y z aa bb cc
-                lappend lines [$S(nc) line "CYCLE800(1,\"[dict get $S(machine) swivel_record]\",0,57,$x,$y,$z,$aa,$bb,$cc,0,0,0,[dict get $rec seq],100,1)"]
-            }
-            spatial {
-                lassign $angles a b c
-                lappend lines [$S(nc) line "PLANE SPATIAL [$S(nc) block [list SPA $a SPB $b SPC $c] 0] TURN MB MAX FMAX SEQ[expr {[dict get $rec seq] < 0 ? "-" : "+"}]"]
-            }
-        }
+        set angles [::fivax::plane::angles [dict get $S(dialect) plane] [dict get $rec matrix]]
+        set lines [concat [my safeZ] [my ToolCall] [my PlaneLines $angles $rec]]
         set S(planeOn) 1
         set S(home) 0
         # (the length compensation again with the plane's first Z move)
@@ -1092,40 +1012,40 @@ oo::class create ::fivax::output::Writer {
         return $lines
     }
 
-    # Returns the blocks that end the work plane: Z up, then G69,
-    # CYCLE800() or PLANE RESET STAY.
+    # Returns the blocks that end the work plane: Z up, then the
+    # dialect's PlaneOffLines.
     method PlaneOff {} {
         if {!$S(planeOn)} {return {}}
         set S(planeOn) 0
-        set lines [my safeZ]
-        switch -exact -- [dict get $S(dialect) plane] {
-            g68.2 {lappend lines [$S(nc) block {G_rot 69}]}
-            cycle800 {lappend lines [$S(nc) line "CYCLE800()"]}
-            spatial {lappend lines [$S(nc) line "PLANE RESET STAY"]}
-        }
+        set lines [concat [my safeZ] [my PlaneOffLines]]
         $S(nc) reset
         return $lines
     }
 
     # Returns the program-end lines: the work plane ended, Z up to the
     # tool-change height, the rotaries to 0 when the machine's
-    # home_rotaries is 1, spindle and coolant off, M30 (Klartext: END PGM),
-    # % where the dialect has it.
+    # home_rotaries is 1, then the end lines (see EndLines).
     method end {} {
         set lines [concat [my PlaneOff] [my safeZ]]
         if {[dict get $S(machine) home_rotaries]} {lappend lines {*}[my HomeRotaries]}
         set off [list M_spindle [my Code spindle_direction_code(OFF)] \
             M_coolant [my Code coolant_code(OFF)]]
-        set end M[my Code end_of_program_code]
-        if {$S(klartext)} {
-            lassign [dict get $S(dialect) units] mm inch
-            set unit [expr {[dict get $S(machine) units] eq "inch" ? $inch : $mm}]
-            return [concat $lines [my KlartextM $off] [list [$S(nc) line "L $end"] \
-                [$S(nc) line "END PGM $S(program) $unit"]]]
-        }
-        lappend lines [$S(nc) block $off] [$S(nc) line $end]
+        concat $lines [my EndLines $off M[my Code end_of_program_code]]
+    }
+
+    # Returns the last lines of the program: the block of the words off
+    # (spindle and coolant off), the line end (M30), % where the dialect
+    # has it.
+    method EndLines {off end} {
+        set lines [list [$S(nc) block $off] [$S(nc) line $end]]
         if {[dict get $S(dialect) percent]} {lappend lines %}
         return $lines
+    }
+
+    # Returns the unit word of the machine's units in the dialect.
+    method Unit {} {
+        lassign [dict get $S(dialect) units] mm inch
+        expr {[dict get $S(machine) units] eq "inch" ? $inch : $mm}
     }
 
     # Returns text made safe for the inside of a comment: parentheses

@@ -7,12 +7,13 @@
 #
 #	Conventions (../shared/spec/dialects.md sections 1-3), angles in
 #	degrees:
-#	  zxz   Fanuc G68.2 I J K: Euler Z-X'-Z'' intrinsic,
+#	(a controller's file names its convention: its writer table's plane)
+#	  zxz   I J K: Euler Z-X'-Z'' intrinsic,
 #	        R = Rz(I) Rx(J) Rz(K)
-#	  xyz   Sinumerik CYCLE800 mode 57 (axis by axis X, Y, Z, each about
-#	        the axis the rotations before left): R = Rx(A) Ry(B) Rz(C)
-#	  spatial  Heidenhain PLANE SPATIAL SPA SPB SPC: about the fixed X,
-#	        then Y, then Z: R = Rz(SPC) Ry(SPB) Rx(SPA)
+#	  xyz   A B C axis by axis X, Y, Z, each about the axis the
+#	        rotations before left: R = Rx(A) Ry(B) Rz(C)
+#	  spatial  SPA SPB SPC: about the fixed X, then Y, then Z:
+#	        R = Rz(SPC) Ry(SPB) Rx(SPA)
 #	Each convention has a decomposition (angles) and a composition
 #	(matrix) that the tests run as a round trip.
 

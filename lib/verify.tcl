@@ -23,17 +23,17 @@
 #	G98/G99 and R: the tool goes to X Y, down to Z, and back to the
 #	initial level or the R plane; G80 or a motion code ends them) and G53
 #	(its axis words are machine coordinates: those axes are unknown until
-#	written again). Sinumerik's SUPA, TRAORI/TRAFOOF and CYCLE800 and
-#	Heidenhain Klartext lines (L, CC, C, TOOL CALL, FUNCTION TCPM, PLANE
-#	SPATIAL, M91) are first turned into those terms.
+#	written again). A controller's keywords and lines of another syntax
+#	are first turned into those terms by the Translate method of its
+#	file's reader class (the reader table's methods key).
 #
 #	Three spaces a block's X Y Z can be in: joint (machine values: the
-#	tip by forward kinematics), TCP (the reader's tcpG, TRAORI, FUNCTION TCPM, or
-#	the machine's tcp_codes: X Y Z are the tip in the workpiece frame,
-#	the axis comes from the rotaries) and a tilted work plane (G68.2,
-#	CYCLE800, PLANE SPATIAL: X Y Z are plane coordinates, the tool axis
-#	is the plane's Z; see lib/plane.tcl). A block's pose {P t} is the
-#	tip and axis in the workpiece frame in each.
+#	tip by forward kinematics), TCP (the reader's tcpG, a keyword its
+#	Translate reads, or the machine's tcp_codes: X Y Z are the tip in the
+#	workpiece frame, the axis comes from the rotaries) and a tilted work
+#	plane (the reader's plane G code, or a keyword: X Y Z are plane
+#	coordinates, the tool axis is the plane's Z; see lib/plane.tcl). A
+#	block's pose {P t} is the tip and axis in the workpiece frame in each.
 
 namespace eval ::fivax::verify {
     namespace export create reader
@@ -55,12 +55,23 @@ namespace eval ::fivax::verify {
     #   word     regexp of one address word, matched with -all -inline
     #            (one flat pattern: capture groups cost 30 times more)
     #   tcpG     the G codes that switch TCP on (G49 switches it off)
-    #   syntax   gcode (ISO words), sinumerik (ISO words and the keywords
-    #            SUPA, TRAORI, TRAFOOF, ORIWKS, ORIAXES, CYCLE800, read by
-    #            Sinumerik) or klartext (each line translated into ISO
-    #            words by Klartext first)
-    # G codes whose meaning the checker follows; others are reported.
-    variable KnownG {0 1 2 3 4 17 18 19 20 21 40 41 42 43 49 53 53.1 54 55 56 57 58 59 68.2 69
+    #   plane    {} or {G code tilt angles}: the G code of a block whose X
+    #            Y Z I J K set a work plane (its origin and its angles in
+    #            convention angles, see lib/plane.tcl; G69 ends it), and
+    #            the G code that follows it (the tool along the plane's Z)
+    #   methods  "" or the class mixed into the Checker whose method
+    #            Translate returns a line of text as the ISO words read
+    #            here (keywords read, lines of another syntax translated)
+    #   plain    1: a line of words of the word pattern alone needs no
+    #            Translate (the keywords are no such words)
+    #   end      "" or a regexp of a line that ends the program (besides
+    #            M2 and M30)
+    #   endName  what end finds, in words ("" none)
+    #   callComp 1: a tool call switches length compensation on (the dry
+    #            run's lengthcomp)
+    # G codes whose meaning the checker follows (with the reader's plane
+    # codes); others are reported.
+    variable KnownG {0 1 2 3 4 17 18 19 20 21 40 41 42 43 49 53 54 55 56 57 58 59 69
         70 71 73 76 80 81 82 83 84 85 86 87 88 89 90 93 94 98 99}
     # Canned cycles.
     variable CycleG {73 76 81 82 83 84 85 86 87 88 89}
@@ -147,13 +158,18 @@ oo::class create ::fivax::verify::Checker {
         set name [dict get $opts -controller]
         if {$name eq ""} {set name [dict get $machine controller]}
         set dialect [::fivax::dialect reader $name -controller]
-        foreach key {comment skip word syntax tcpG} {set S($key) [dict get $dialect $key]}
+        foreach key {comment skip word tcpG end} {set S($key) [dict get $dialect $key]}
+        if {[dict get $dialect methods] ne ""} {
+            oo::objdefine [self] mixin [dict get $dialect methods]
+        }
         set S(lineRe) [::fivax::verify::LineRe $S(word)]
-        # a line of plain words holds no comment and no keyword (Sinumerik's
-        # are words of two letters or more): it needs no reading but split
-        set S(plainText) [expr {$S(lineRe) ne "" && $S(syntax) ne "klartext"}]
+        # a line of plain words holds no comment and no keyword: it needs
+        # no reading but split
+        set S(plainText) [expr {$S(lineRe) ne "" && [dict get $dialect plain]}]
         set S(pi) $::fivax::num::pi
         foreach key {CycleG KnownG KnownLetters} {set S($key) [set ::fivax::verify::$key]}
+        lassign [dict get $dialect plane] S(planeG) - S(planeAngles)
+        lappend S(KnownG) {*}[lrange [dict get $dialect plane] 0 1]
         set chain [dict get $machine chain]
         set names [lmap axis $chain {dict get $axis name}]
         set S(tcpCodes) [dict get $machine tcp_codes]
@@ -216,10 +232,10 @@ oo::class create ::fivax::verify::Checker {
     #   hole     1 when the block drills a hole of a canned cycle: joints
     #            are then at the hole's bottom, and the modal Z afterwards
     #            is the level the cycle returns to
-    #   end      1 when the line ends the program (M2, M30, Klartext END PGM)
+    #   end      1 when the line ends the program (M2, M30, the reader's end)
     method read {line} {
         lassign [my Read $line 1] joints pose space limit arc hole block moved F pairs comments unknown
-        set end [expr {$S(syntax) eq "klartext" && [regexp {^\s*(\d+\s+)?END PGM\M} $line]}]
+        set end [expr {$S(end) ne "" && [regexp -- $S(end) $line]}]
         foreach {letter value} $pairs {
             if {$letter eq "M" && ($value == 2 || $value == 30)} {set end 1}
         }
@@ -231,78 +247,23 @@ oo::class create ::fivax::verify::Checker {
     # Reads one NC line as read does (see there) and returns the values of
     # its dict as a list: joints pose space limit arc hole block moved F
     # words comments unknown (the post's check takes the first six, and
-    # words are gathered only when wantPairs is 1).
+    # words are gathered only when wantPairs is 1). Three phases: the
+    # line's words (Words), the modal state they change (GModes, then
+    # each word), the block's results (Arc, the hole's end state).
     method Read {line wantPairs} {
-        set comments {}
-        if {$S(plainText) && [regexp -- $S(lineRe) $line]} {
-            # plain words (every ISO block fivax writes): no comment, no keyword
-            set text $line
-            set plain 1
-            set skip [expr {[string first " " $line] < 0 && [regexp -- $S(skip) $line]}]
-        } else {
-            set text $line
-            switch -exact -- $S(syntax) {
-                klartext {set text [my Klartext $text]}
-                sinumerik {set text [my Sinumerik $text]}
-            }
-            if {[string first ( $text] >= 0 || [string first ";" $text] >= 0} {
-                foreach {- a b} [regexp -all -inline -- $S(comment) $text] {
-                    lappend comments [expr {$a ne "" ? $a : $b}]
-                }
-                regsub -all -- $S(comment) $text "" text
-            }
-            # a line of plain words is split at its spaces
-            set plain [expr {$S(lineRe) ne "" && [regexp -- $S(lineRe) $text]}]
-            set skip [expr {(!$plain && [string trim $text] eq "") || [regexp -- $S(skip) $line]}]
-        }
+        lassign [my Words $line] skip words comments unknown
         if {$skip} {
             return [list {*}[my State] {} {} 0 0 {} "" {} $comments {}]
         }
-        set unknown {}
-        if {$plain} {
-            set words [split $text " "]
-        } else {
-            set words [regexp -all -inline -- $S(word) $text]
-            set rest [string trim [regsub -all -- $S(word) $text ""]]
-            if {$rest ne ""} {lappend unknown text $rest}
+        lassign [my GModes $words] machineFrame planeSet dwell
+        if {$planeSet} {
+            my PlaneWords $words
+            return [list {*}[my State] {} {} 0 1 {} "" {} $comments {}]
         }
         set pairs {}
         set moved {}
         set limit {}
         set F ""
-        # G codes first: they decide what the axis words mean (most
-        # blocks have none)
-        set machineFrame 0
-        set planeSet 0
-        set dwell 0
-        if {[string first G $text] >= 0} {
-            foreach word [lsearch -all -inline -glob $words G*] {
-                set value [::fivax::verify::Number [string range $word 1 end]]
-                if {$value eq ""} continue
-                set g [expr {$value == round($value) ? int($value) : $value}]
-                if {$g in $S(CycleG)} {
-                    if {!$S(cycle)} {
-                        set S(initial) $S(Z)
-                        set S(bottom) $S(Z)
-                    }
-                    set S(cycle) 1
-                } elseif {$g in {98 99}} {
-                    set S(return) $g
-                } elseif {$g in {0 1 2 3 80}} {
-                    set S(cycle) 0
-                } elseif {$g == 53} {
-                    set machineFrame 1
-                } elseif {$g == 68.2} {
-                    set planeSet 1
-                } elseif {$g == 4} {
-                    set dwell 1
-                }
-            }
-        }
-        if {$planeSet} {
-            my PlaneWords $words
-            return [list {*}[my State] {} {} 0 1 {} "" {} $comments {}]
-        }
         set hole 0
         set start [list $S(X) $S(Y) $S(Z)]
         set ijk {I 0.0 J 0.0 K 0.0}
@@ -359,41 +320,17 @@ oo::class create ::fivax::verify::Checker {
                 }
             }
             if {$letter in $S(rotaries)} {
-                # the value in radians (num rad, written out) against the limits
-                lassign $S(axis:$letter) key lo hi
-                set q [expr {$x * $S(pi) / 180.0}]
-                if {$q < $lo || $q > $hi} {
-                    incr S(limitViolations)
-                    lappend limit $letter
-                }
-                set S($key) $q
+                if {[my Rotary $letter $x]} {lappend limit $letter}
                 lappend moved $letter
                 continue
             }
             switch -exact -- $letter {
                 G {
-                    set g [expr {$x == round($x) ? int($x) : $x}]
-                    switch -exact -- $g {
-                        0 {set S(motion) 0}
-                        1 {set S(motion) 1}
-                        2 - 3 {set S(motion) $g}
-                        17 - 18 - 19 {set S(plane) $g}
-                        49 {set S(tcp) 0}
-                        69 {set S(frame) {}}
-                        93 {set S(mode) inverse}
-                        94 {set S(mode) direct}
-                        default {
-                            if {[lsearch -exact -real $S(tcpG) $g] >= 0} {
-                                set S(tcp) 1
-                            } elseif {$g ni $S(KnownG)} {
-                                lappend unknown G$g $word
-                            }
-                        }
-                    }
+                    lappend unknown {*}[my GWord $x $word]
                     set arcMode [expr {$S(motion) in {2 3}}]
                 }
                 F {
-                    # (G4 F: a Sinumerik dwell time, no feed)
+                    # (G4 F: a dwell time in seconds, no feed)
                     if {!$dwell} {
                         set S(F) $x
                         set F $x
@@ -415,16 +352,7 @@ oo::class create ::fivax::verify::Checker {
         set arc {}
         if {$arcMode && [llength $moved]} {
             if {!$centreGiven} {lappend unknown "arc without I J K or R" G$S(motion)}
-            if {$radius ne ""} {
-                set centre [::fivax::verify::RadiusCentre $start [list $S(X) $S(Y) $S(Z)] \
-                    $radius $S(plane) $S(motion)]
-            } else {
-                # the centre from the start by I J K (incremental)
-                set centre [lmap c $start d [dict values $ijk] {
-                    expr {$c eq "" ? "" : $c + $d}
-                }]
-            }
-            set arc [list $start $centre $S(plane) $S(motion)]
+            set arc [my Arc $start $radius $ijk]
         }
         if {$hole} {
             set z $S(Z)
@@ -438,9 +366,127 @@ oo::class create ::fivax::verify::Checker {
         list {*}$state $limit $arc $hole 1 $moved $F $pairs $comments $unknown
     }
 
-    # Reads a G68.2 block (words): the work plane's origin X Y Z and its
-    # Euler angles I J K (ZXZ). X Y Z are forgotten (the next ones are in
-    # the plane).
+    # Returns {skip words comments unknown} of NC line: skip 1 for a line
+    # that is no block (the reader's skip, nothing but comments), its
+    # words (the text split, after the controller's Translate and with
+    # its comments removed), the comment texts, and {text rest} in
+    # unknown for text that is no word.
+    method Words {line} {
+        set comments {}
+        if {$S(plainText) && [regexp -- $S(lineRe) $line]} {
+            # plain words (every ISO block fivax writes): no comment, no keyword
+            set skip [expr {[string first " " $line] < 0 && [regexp -- $S(skip) $line]}]
+            return [list $skip [split $line " "] {} {}]
+        }
+        set text [my Translate $line]
+        if {[string first ( $text] >= 0 || [string first ";" $text] >= 0} {
+            foreach {- a b} [regexp -all -inline -- $S(comment) $text] {
+                lappend comments [expr {$a ne "" ? $a : $b}]
+            }
+            regsub -all -- $S(comment) $text "" text
+        }
+        # a line of plain words is split at its spaces
+        set plain [expr {$S(lineRe) ne "" && [regexp -- $S(lineRe) $text]}]
+        set skip [expr {(!$plain && [string trim $text] eq "") || [regexp -- $S(skip) $line]}]
+        if {$plain} {return [list $skip [split $text " "] $comments {}]}
+        set unknown {}
+        set rest [string trim [regsub -all -- $S(word) $text ""]]
+        if {$rest ne ""} {lappend unknown text $rest}
+        list $skip [regexp -all -inline -- $S(word) $text] $comments $unknown
+    }
+
+    # Returns {machineFrame planeSet dwell} of a block's words: its G codes
+    # first (they decide what the axis words mean; most blocks have
+    # none): G53 (machine coordinates), the reader's plane G code, G4;
+    # canned cycles start (the initial level kept), G98/G99 set the
+    # return level, a motion code or G80 ends a cycle.
+    method GModes {words} {
+        set machineFrame 0
+        set planeSet 0
+        set dwell 0
+        foreach word [lsearch -all -inline -glob $words G*] {
+            set value [::fivax::verify::Number [string range $word 1 end]]
+            if {$value eq ""} continue
+            set g [expr {$value == round($value) ? int($value) : $value}]
+            if {$g in $S(CycleG)} {
+                if {!$S(cycle)} {
+                    set S(initial) $S(Z)
+                    set S(bottom) $S(Z)
+                }
+                set S(cycle) 1
+            } elseif {$g in {98 99}} {
+                set S(return) $g
+            } elseif {$g in {0 1 2 3 80}} {
+                set S(cycle) 0
+            } elseif {$g == 53} {
+                set machineFrame 1
+            } elseif {$g == $S(planeG)} {
+                set planeSet 1
+            } elseif {$g == 4} {
+                set dwell 1
+            }
+        }
+        list $machineFrame $planeSet $dwell
+    }
+
+    # Sets rotary letter to x (deg, kept in radians); returns 1 when the
+    # value is outside its limits (counted).
+    method Rotary {letter x} {
+        lassign $S(axis:$letter) key lo hi
+        # the value in radians (num rad, written out) against the limits
+        set q [expr {$x * $S(pi) / 180.0}]
+        set S($key) $q
+        if {$q < $lo || $q > $hi} {
+            incr S(limitViolations)
+            return 1
+        }
+        return 0
+    }
+
+    # Follows the G code x (the word word) in the modal state: motion,
+    # plane, TCP, frame and feed mode; returns {G<x> word} for a G code
+    # the checker does not follow, else {}.
+    method GWord {x word} {
+        set g [expr {$x == round($x) ? int($x) : $x}]
+        switch -exact -- $g {
+            0 {set S(motion) 0}
+            1 {set S(motion) 1}
+            2 - 3 {set S(motion) $g}
+            17 - 18 - 19 {set S(plane) $g}
+            49 {set S(tcp) 0}
+            69 {set S(frame) {}}
+            93 {set S(mode) inverse}
+            94 {set S(mode) direct}
+            default {
+                if {[lsearch -exact -real $S(tcpG) $g] >= 0} {
+                    set S(tcp) 1
+                } elseif {$g ni $S(KnownG)} {
+                    return [list G$g $word]
+                }
+            }
+        }
+        return {}
+    }
+
+    # Returns the arc {start centre plane dir} of an arc block from start
+    # (the modal X Y Z before it) to the modal X Y Z: the centre by the
+    # radius (not "") or the start plus ijk (I J K offsets).
+    method Arc {start radius ijk} {
+        if {$radius ne ""} {
+            set centre [::fivax::verify::RadiusCentre $start [list $S(X) $S(Y) $S(Z)] \
+                $radius $S(plane) $S(motion)]
+        } else {
+            # the centre from the start by I J K (incremental)
+            set centre [lmap c $start d [dict values $ijk] {
+                expr {$c eq "" ? "" : $c + $d}
+            }]
+        }
+        list $start $centre $S(plane) $S(motion)
+    }
+
+    # Reads a block of the reader's plane G code (words): the work plane's
+    # origin X Y Z and its angles I J K (in the reader's convention). X Y
+    # Z are forgotten (the next ones are in the plane).
     method PlaneWords {words} {
         set v {X 0.0 Y 0.0 Z 0.0 I 0.0 J 0.0 K 0.0}
         foreach word $words {
@@ -450,7 +496,7 @@ oo::class create ::fivax::verify::Checker {
                 dict set v $letter $value
             }
         }
-        my SetFrame zxz [list [dict get $v I] [dict get $v J] [dict get $v K]] \
+        my SetFrame $S(planeAngles) [list [dict get $v I] [dict get $v J] [dict get $v K]] \
             [list [dict get $v X] [dict get $v Y] [dict get $v Z]]
     }
 
@@ -462,120 +508,22 @@ oo::class create ::fivax::verify::Checker {
         foreach key {X Y Z q1 q2} {set S($key) ""}
     }
 
-    # Returns the Klartext line as the ISO words the reader follows: L
-    # (FMAX: G0, else G1, M91: G53, R0 left out), C with DR-/DR+ (G2/G3,
-    # the centre from the last CC as I J), TOOL CALL (T M6, S), FUNCTION
-    # TCPM (G43.4) and FUNCTION RESET TCPM (G49), STOP (M0), BEGIN PGM's
-    # units (G21 MM, G20 INCH); CC, PLANE SPATIAL and PLANE RESET set the
-    # state and give no block; END PGM and cycle 9 are no blocks (read
-    # tells the program's end); a comment "; text" stays one.
-    method Klartext {line} {
-        if {[regexp {^\d+ L(?: \S+)*$} $line]} {
-            # numbered, single spaces (every L line fivax writes): the
-            # tokens are split at the spaces, as the general way finds them
-            set tokens [lrange [split $line " "] 2 end]
-        } else {
-            set body [string trim $line]
-            regexp {^\d+\s+(.*)$} $body -> body
-            if {[regexp {^L(\s.*)?$} $body -> rest]} {
-                set tokens [regexp -all -inline {\S+} $rest]
-            }
-        }
-        if {[info exists tokens]} {
-            # (an L line is a straight move: FMAX makes it rapid for this
-            # block only, else it feeds at the modal F)
-            set iso [expr {"FMAX" in $tokens ? {} : {G1}}]
-            foreach tok $tokens {
-                if {$tok eq "FMAX"} {
-                    set iso [linsert $iso 0 G0]
-                } elseif {$tok in {R0 RL RR}} {
-                } elseif {$tok eq "M91"} {
-                    set iso [linsert $iso 0 G0 G53]
-                } elseif {[string match F* $tok] && [regexp {^F[0-9.]+$} $tok]} {
-                    lappend iso $tok
-                } else {
-                    lappend iso $tok
-                }
-            }
-            return [join $iso]
-        }
-        set pl {[-+]?[0-9.]+}
-        if {[regexp {^BEGIN PGM\s+\S+\s+(MM|INCH)\s*$} $body -> units]} {
-            return [dict get {MM G21 INCH G20} $units]
-        }
-        if {[regexp {^;} $body] || [regexp {^(BEGIN|END) PGM\M} $body]
-                || [regexp {^CYCL DEF 9\.} $body]} {
-            return [expr {[string index $body 0] eq ";" ? $body : ""}]
-        }
-        if {[regexp "^CC\\s+(.*)$" $body -> rest]} {
-            foreach tok [regexp -all -inline {\S+} $rest] {
-                if {[regexp "^(\[XYZ\])($pl)$" $tok -> axis value]} {dict set S(cc) $axis $value}
-            }
-            return ""
-        }
-        if {[regexp {^C\s+(.*)$} $body -> rest]} {
-            set iso {}
-            foreach tok [regexp -all -inline {\S+} $rest] {
-                if {$tok in {DR- DR+}} {
-                    set iso [linsert $iso 0 G17 [expr {$tok eq "DR-" ? "G2" : "G3"}]]
-                } elseif {$tok ni {R0 RL RR}} {
-                    lappend iso $tok
-                }
-            }
-            foreach {axis letter} {X I Y J} {
-                if {[dict exists $S(cc) $axis] && $S($axis) ne ""} {
-                    lappend iso $letter[expr {[dict get $S(cc) $axis] - $S($axis)}]
-                }
-            }
-            return [join $iso]
-        }
-        if {[regexp {^TOOL CALL\s*(\d*)\s*[XYZ]?\s*(S\d+)?} $body -> tool speed]} {
-            # (a tool change: T with M6, as in ISO)
-            return [string trim "[expr {$tool ne "" ? "T$tool M6" : ""}] $speed"]
-        }
-        if {[regexp {^FUNCTION TCPM\M} $body]} {return G43.4}
-        if {[regexp {^FUNCTION RESET TCPM\M} $body]} {return G49}
-        if {[regexp "^PLANE SPATIAL SPA($pl) SPB($pl) SPC($pl)" $body -> a b c]} {
-            my SetFrame spatial [list $a $b $c] {0.0 0.0 0.0}
-            return ""
-        }
-        if {[regexp {^PLANE RESET\M} $body]} {
-            set S(frame) {}
-            foreach key {q1 q2} {set S($key) ""}
-            return ""
-        }
-        if {$body eq "STOP"} {return M0}
-        return $body
+    # Returns the line as the ISO words read (a controller's reader class
+    # reads its keywords here): as it is.
+    method Translate {line} {
+        return $line
     }
 
-    # Returns the Sinumerik line with its keywords read: SUPA as G53,
-    # TRAORI / TRAFOOF switching TCP, ORIWKS / ORIAXES (the defaults the
-    # reader assumes) dropped, CYCLE800(..) setting the work plane (mode
-    # 57: rotations about X, Y', Z'') and CYCLE800() ending it.
-    method Sinumerik {line} {
-        set text $line
-        if {[string first ";" $text] >= 0} {
-            set comment [string range $text [string first ";" $text] end]
-            set text [string range $text 0 [string first ";" $text]-1]
-        } else {
-            set comment ""
-        }
-        regsub -all {\mSUPA\M} $text G53 text
-        if {[regsub -all {\mTRAORI\M} $text "" text]} {set S(tcp) 1}
-        if {[regsub -all {\mTRAFOOF\M} $text "" text]} {set S(tcp) 0}
-        regsub -all {\m(ORIWKS|ORIAXES)\M} $text "" text
-        if {[regexp {\mCYCLE800\(([^)]*)\)} $text -> args]} {
-            set v [split $args ,]
-            if {[string trim $args] eq ""} {
-                set S(frame) {}
-                foreach key {q1 q2} {set S($key) ""}
-            } elseif {[llength $v] >= 10 && [string trim [lindex $v 3]] eq "57"} {
-                my SetFrame xyz [lmap x [lrange $v 7 9] {string trim $x}] \
-                    [lmap x [lrange $v 4 6] {string trim $x}]
-            }
-            regsub {\mCYCLE800\([^)]*\)} $text "" text
-        }
-        return "$text$comment"
+    # Ends the work plane: the rotaries are forgotten (the control turns
+    # them back).
+    method EndFrame {} {
+        set S(frame) {}
+        foreach key {q1 q2} {set S($key) ""}
+    }
+
+    # Sets the TCP mode: on 1 or 0.
+    method SetTcp {on} {
+        set S(tcp) $on
     }
 
     # Returns {P t}: the tip and axis in the workpiece frame of the point

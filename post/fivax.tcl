@@ -229,7 +229,7 @@ fivax_handler MOM_start_of_program {
     set planOptions [fivax::settings pick $fivax(settings) motion]
     set caps [$fivax(out) capabilities]
     if {![dict get $caps inverse] && [dict get $planOptions -feed] eq "inverse"} {
-        # no inverse time (Klartext): F is the feed of all axes together,
+        # no inverse time: F is the feed of all axes together,
         # degrees counted as mm, which keeps the tip feed (in TCP mode F
         # is the tip feed itself: nothing to note)
         dict set planOptions -feed dpm
@@ -282,8 +282,8 @@ proc MOM_first_tool {} {
 # "not set") means the tool number, and so does a negative one (with a
 # warning). The spindle goes up to the tool-change height first; the next
 # operation approaches from there. The tool change leaves the spindle
-# stopped (M6 stops it on the controls fivax writes for; Klartext's TOOL
-# CALL takes the speed): the next cut starts it again. Every change is
+# stopped (M6 stops it on the controls fivax writes for; a tool change
+# deferred to the spindle start takes the speed): the next cut starts it again. Every change is
 # followed by the comment FIVAX TOOL n LENGTH L [RADIUS R], the tool
 # the program was computed for, which the dry run reads.
 fivax_handler MOM_tool_change {
@@ -462,8 +462,8 @@ proc fivax_coolant {} {
 # 2D cutter compensation (CUTCOM/LEFT|RIGHT|OFF: MOM_cutcom_on/off with
 # mom_cutcom_mode, mom_cutcom_register). The CL is the tool centre path
 # (NX "centerline data", Creo OUTPUT_ON_CENTER, SolidWorks CAM's path
-# offset by the tool radius): the output layer writes G41/G42 D (Klartext
-# RL/RR) where the tool stands along the Z of the written X Y Z (3-axis,
+# offset by the tool radius): the output layer writes G41/G42 D (or the
+# dialect's radius words) where the tool stands along the Z of the written X Y Z (3-axis,
 # 3+2) for the control's wear correction, G40 (R0) at CUTCOM/OFF, and
 # warns where it cannot (simultaneous five-axis). The planner holds moves
 # (a whole operation for its work plane), so a change waits in

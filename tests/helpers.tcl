@@ -165,7 +165,8 @@ proc programProblems {path machineFile {controller ""}} {
     # the controller's safety G codes, its G43 length compensation and TCP G codes
     set writer [fivax::dialect writer $controller]
     set safety [lmap {- v} [dict get $writer safety] {set v}]
-    set gLength [expr {[dict get $writer length] eq "G43"}]
+    # (G43 controls: their safety line cancels it)
+    set gLength [dict exists [dict get $writer safety] G_length]
     set tcpG [dict get [fivax::dialect reader $controller] tcpG]
     # blocks that may stand between the Z up and the tool change
     set cancels {G69$|CYCLE800\(\)|PLANE RESET|TRAFOOF|FUNCTION RESET TCPM|^(N\d+ )?G49$}

@@ -101,16 +101,6 @@ namespace eval ::fuzz {
         {\[exec touch CANARY\]} "\[exec touch CANARY\]\n" {{*}[exec touch CANARY]}
         {[source CANARY]} {${CANARY}} {[::exit 3]} {[exit 3]}
     }
-    # Per dialect: the program's opening and closing lines (first, close;
-    # "" for none), the block that starts its modes and its end block.
-    variable programForms {
-        fanuc {first {^%$} close {^%$} start {\mG2[01] G90\M} end {\mM(30|0?2)\M}}
-        linuxcnc {first {^%$} close {^%$} start {\mG2[01] G90\M} end {\mM(30|0?2)\M}}
-        haas {first {^%$} close {^%$} start {\mG2[01] G90\M} end {\mM(30|0?2)\M}}
-        sinumerik {first {} close {} start {\mG7[01] G90\M} end {\mM(30|0?2)\M}}
-        heidenhain {first {^0 BEGIN PGM } close {^\d+ END PGM } start {BEGIN PGM}
-            end {\mM(30|0?2)\M}}
-    }
     # The failure classes, in the order of the report.
     variable classNames {stacktrace timeout exit canary stray partial nonfinite limits noplace
         internal lifecycle values dwell dispatch}
@@ -506,7 +496,7 @@ proc ::fuzz::MakeCase {i seed sources machines most work} {
         lappend tags $tag
     }
     if {"-controller" ni $args && [Chance 0.2]} {
-        set controller [Pick {sinumerik heidenhain linuxcnc}]
+        set controller [Pick [lsearch -all -inline -not -exact [fivax::dialect names] [fivax::dialect default]]]
         set args [linsert $args 0 -controller $controller]
         lappend tags controller:$controller
     }
@@ -702,11 +692,12 @@ proc ::fuzz::CheckNc {c nc err} {
     set text [join $code \n]
     if {[regexp -nocase {[A-Z][-+]?(nan|inf)} $text]} {lappend classes nonfinite}
     if {[catch {fivax::machine load [dict get $c machine]} m]} {set m ""}
-    if {![Inside $text $m]} {lappend classes limits}
-    if {![OneProgram $code [Controller $c $m]]} {lappend classes lifecycle}
+    set form [dict get [fivax::dialect writer [Controller $c $m]] form]
+    if {![Inside $text $m $form]} {lappend classes limits}
+    if {![OneProgram $code $form]} {lappend classes lifecycle}
     # values a control refuses (the F of a dwell is its time), and numbers
     # of 13 digits or more in any line (no control reads them)
-    set blocks [lsearch -all -inline -not -regexp $code {\mG0?4\M|CYCL DEF 9\.}]
+    set blocks [lsearch -all -inline -not -regexp $code [dict get $form dwell]]
     if {[regexp {\m[FS][-+]?(0+\.?0*|\.0+)(\s|$)|\m[FSTHD]-} [join $blocks \n]]
             || [regexp {[0-9]{13}} $text]} {
         lappend classes values
@@ -723,7 +714,7 @@ proc ::fuzz::CheckNc {c nc err} {
         set l [string trimright $l]
         set continued [expr {[string index $l end] eq "\$" && [string index $l end-1] ne "\$"}]
     }
-    if {$dwell && ![regexp {\mG0?4\M|CYCL DEF 9\.} $text]} {
+    if {$dwell && ![regexp -- [dict get $form dwell] $text]} {
         lappend classes dwell
     }
     lappend classes {*}[CheckWords $c $err]
@@ -734,9 +725,10 @@ proc ::fuzz::CheckNc {c nc err} {
 #	Returns 1 when every axis word of NC text is finite and, on machine m
 #	(a machine dict, "" when it cannot be loaded), inside its rotary
 #	limits and, unless the program has a work plane or TCP (where X Y Z
-#	are no machine values), its travel.
-proc ::fuzz::Inside {text m} {
-    set machineXyz [expr {![regexp {G68\.2|CYCLE800|PLANE SPATIAL|G43\.4|TRAORI|TCPM} $text]}]
+#	are no machine values: form's free, see OneProgram), its travel.
+proc ::fuzz::Inside {text m form} {
+    set free [dict get $form free]
+    set machineXyz [expr {$free eq "" || ![regexp -- $free $text]}]
     foreach {- letter value} [regexp -all -inline {\m([A-EU-Z])([-+]?[0-9]*\.?[0-9]+)} $text] {
         if {![string is double -strict $value] || abs($value) >= 1e7} {return 0}
         if {$m eq "" || $letter eq "D" || (!$machineXyz && $letter in {X Y Z})} continue
@@ -748,22 +740,22 @@ proc ::fuzz::Inside {text m} {
 
 # ::fuzz::Controller --
 #	Returns the dialect case c posts in: its -controller, else machine m's
-#	(a machine dict or ""), else fanuc.
+#	(a machine dict or ""), else the default controller.
 proc ::fuzz::Controller {c m} {
     set cmd [dict get $c cmd]
     if {[set at [lsearch -exact $cmd -controller]] >= 0} {return [lindex $cmd $at+1]}
     if {$m ne ""} {return [dict get $m controller]}
-    return fanuc
+    fivax::dialect default
 }
 
 # ::fuzz::OneProgram --
 #	Returns 1 when the NC lines code (comments and empty lines removed)
-#	are one program of controller: its opening and closing lines (none
-#	on sinumerik) around it, one start of modes and one end (M30, M2)
-#	as the last block.
-proc ::fuzz::OneProgram {code controller} {
-    variable programForms
-    dict with programForms $controller {}
+#	are one program of the form form (a controller's writer table's
+#	form: lib/output.tcl): its opening and closing lines (where it has
+#	them) around it, one start of modes and one end (M30, M2) as the
+#	last block.
+proc ::fuzz::OneProgram {code form} {
+    dict with form {}
     set last end
     if {$first ne ""} {
         if {![regexp $first [lindex $code 0]] || ![regexp $close [lindex $code end]]

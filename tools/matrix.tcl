@@ -185,7 +185,7 @@ proc ::matrixtool::Refusal {out} {
     set last [lindex [split $out \n] end]
     if {[regexp {internal error|dry run|\mevents?\M} $out]} {return failed}
     # a CL record's FILE:LINE, or the machine file's name for a setting
-    # the machine cannot take (TCP on linuxcnc without tcp_codes)
+    # the machine cannot take (TCP on a control without a TCP of its own and no tcp_codes)
     if {[regexp {^\S+:\d+: |^\S+\.tcl: } $last]} {return refused}
     return failed
 }

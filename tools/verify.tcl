@@ -1,6 +1,6 @@
 # verify.tcl --
-#	Checks an NC program on a virtual machine: reads every block (fanuc or
-#	linuxcnc text, from fivax or another post), maps it back by forward
+#	Checks an NC program on a virtual machine: reads every block (of any
+#	controller of lib/dialect/, from fivax or another post), maps it back by forward
 #	kinematics (never the inverse) and reports per operation the tool tip
 #	and axis deviation at block ends (with -cl: the tip's distance from
 #	the CL path, at most the post's figure, its distance from the CL
@@ -262,8 +262,8 @@ proc ::verifytool::SetLength {} {
 }
 
 # ::verifytool::Cutcom --
-#	Follows 2D cutter radius compensation (G41/G42 on, G40 off; Klartext
-#	RL/RR, R0) through the NC line and its read block blk, counting the
+#	Follows 2D cutter radius compensation (G41/G42 on, G40 off; in the
+#	klartext syntax RL/RR, R0) through the NC line and its read block blk, counting the
 #	motion blocks under it: they are back-plotted as programmed (the
 #	path the CL gives), while the control offsets them by the radius in
 #	its register (the post's programs: the wear).
@@ -272,7 +272,7 @@ proc ::verifytool::Cutcom {line blk} {
     foreach {letter v} [dict get $blk words] {
         if {$letter eq "G" && $v in {40 41 42}} {set S(cutcom) [expr {$v != 40}]}
     }
-    # (Klartext: the radius word of an L or C block)
+    # (the klartext syntax: the radius word of an L or C block)
     if {[regexp {^\s*\d+\s+[LC]\M.*\mR([0LR])(\s|$)} $line -> side]} {
         set S(cutcom) [expr {$side ne "0"}]
     }

@@ -6,11 +6,33 @@
 #	canned cycles G73 G76 G81..G89, end M30. Spec dialects.md section 1.
 #	Writer keys: lib/output.tcl (Dialects); reader keys: lib/verify.tcl.
 
+namespace eval ::fivax::dialect::fanuc {}
+
+# The writer's forms of this control (mixed into ::fivax::output::Writer).
+oo::class create ::fivax::dialect::fanuc::Writer {
+    variable S
+
+    # Returns the work plane's blocks: G68.2 X Y Z (the origin) I J K
+    # (Euler Z-X'-Z'' angles) and G53.1 (the tool along its Z).
+    method PlaneLines {angles rec} {
+        lassign [dict get $rec origin] ox oy oz
+        lassign $angles i j k
+        list [$S(nc) block [list G_rot 68.2 X $ox Y $oy Z $oz E_i $i E_j $j E_k $k]] \
+            [$S(nc) block {G_tilt 53.1}]
+    }
+
+    # Returns the block that ends the work plane: G69.
+    method PlaneOffLines {} {
+        list [$S(nc) block {G_rot 69}]
+    }
+}
+
 ::fivax::dialect::define fanuc {
+    default 1
     syntax gcode program O%04d percent 1 comment paren semicolon 0
     safety {G_cutcom 40 G_length 49 G_cycle 80} reset {G69} units {21 20}
-    length G43 machineZ G53 inverse 1
-    tcp {on G43.4 off G49} plane g68.2 arcs {planes {17 18 19} helix 1}
+    methods ::fivax::dialect::fanuc::Writer inverse 1
+    tcp {on G43.4 off G49} plane zxz arcs {planes {17 18 19} helix 1}
     dwell P_ms
     cycles {drill 81 drill_dwell 82 drill_deep 83 drill_break_chip 73 tap 84
         bore 85 bore_drag 86 bore_no_drag 76 bore_back 87 bore_manual 88 bore_dwell 89}
@@ -18,10 +40,17 @@
     active {}
     ends {{2 30 99} {%}}
     cutcom GD
+    form {first {^%$} close {^%$} start {\mG2[01] G90\M} end {\mM(30|0?2)\M}
+        dwell {\mG0?4\M} free {G68\.2|G43\.4}}
+    words {G43.4 G68.2 G53.1 fanuc Fanuc}
 } {
     comment {\(([^)]*)\)}
     skip {^\s*(%|O\d+\s*(\(.*\))?\s*)$}
     word {[A-Z][-+.0-9]+}
     tcpG {43.4}
-    syntax gcode
+    plane {68.2 53.1 zxz}
+    methods {}
+    plain 1
+    end {} endName {}
+    callComp 0
 }

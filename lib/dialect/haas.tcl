@@ -1,12 +1,12 @@
 # haas.tcl --
 #	Haas NGC (Next Generation Control) mill, five-axis trunnions such as
-#	the UMC-750: ISO G code much like fanuc. Sources: Haas NGC Mill
+#	the UMC-750: ISO G code. Sources: Haas NGC Mill
 #	Operator's Manual, online edition (haascnc.com "Next Generation
 #	Control Mill Operator's Manual"), G-code chapter:
 #	  - G234 Tool Center Point Control (TCPC) (Group 08): X Y Z are the
 #	    tip in the work-offset frame, which "remains fixed relative to the
 #	    table; when the rotary axes rotate, the linear coordinate system
-#	    rotates with them". Written as fanuc's G43.4: in the first X Y Z
+#	    rotates with them". Written as a TCP G code: in the first X Y Z
 #	    block after the rotaries are positioned, with the length register
 #	    H (G234 shares G43's group 08, so it takes the H that G43 would);
 #	    cancelled by G49 in a block of its own before the Z up.
@@ -16,7 +16,7 @@
 #	    notes). Not written (yet): fivax has no work-plane form whose X Y Z
 #	    stay in the workpiece frame while the rotaries stand still. A 3+2
 #	    operation is written in joint mode as rotary positioning plus
-#	    machine coordinates (as for LinuxCNC), and with -tcp 1 as G234
+#	    machine coordinates, and with -tcp 1 as G234
 #	    blocks whose rotaries do not move, which is what DWO does.
 #	  - G93 inverse time feed (Group 05), F on every G1/G2/G3 block; G94.
 #	  - canned cycles G73 G76 G81 G82 G83 G84 G85 G86 G89 with G98/G99
@@ -24,14 +24,15 @@
 #	    the back bore is expanded into moves by the planner).
 #	  - G04 P: with no decimal point P is milliseconds (P_ms, integer).
 #	  - M30 ends the program; % opens and closes it; O number of 5 digits.
-#	  - G41/G42 D n, G40: 2D cutter compensation (cutcom GD, as fanuc); on
+#	  - G41/G42 D n, G40: 2D cutter compensation (cutcom GD); on
 #	    fivax's tool centre paths the D offset holds the wear only.
 #	Writer keys: lib/output.tcl (Dialects); reader keys: lib/verify.tcl.
 
 ::fivax::dialect::define haas {
+    default 0
     syntax gcode program O%05d percent 1 comment paren semicolon 0
     safety {G_cutcom 40 G_length 49 G_cycle 80} reset {} units {21 20}
-    length G43 machineZ G53 inverse 1
+    methods {} inverse 1
     tcp {on G234 off G49} plane {} arcs {planes {17 18 19} helix 1}
     dwell P_ms
     cycles {drill 81 drill_dwell 82 drill_deep 83 drill_break_chip 73 tap 84
@@ -40,10 +41,17 @@
     active {}
     ends {{2 30 99} {%}}
     cutcom GD
+    form {first {^%$} close {^%$} start {\mG2[01] G90\M} end {\mM(30|0?2)\M}
+        dwell {\mG0?4\M} free {\mG234\M}}
+    words {G234 haas Haas}
 } {
     comment {\(([^)]*)\)}
     skip {^\s*(%|O\d+\s*(\(.*\))?\s*)$}
     word {[A-Z][-+.0-9]+}
     tcpG {234}
-    syntax gcode
+    plane {}
+    methods {}
+    plain 1
+    end {} endName {}
+    callComp 0
 }

@@ -1,6 +1,6 @@
 # linuxcnc.tcl --
-#	LinuxCNC 2.9 (rs274ngc): as fanuc with ( ) and ; comments, no O
-#	number, G4 P in seconds, no G68.2 (3+2 as rotary positioning and
+#	LinuxCNC 2.9 (rs274ngc): ISO G code with ( ) and ; comments, no O
+#	number, G4 P in seconds, no work plane (3+2 as rotary positioning and
 #	machine coordinates) and no TCP G code (the machine file's tcp_codes
 #	M codes of a switchable-kinematics configuration), comment words the
 #	interpreter acts on (MSG, DEBUG, ...) defused, end M30 and %. Spec
@@ -8,9 +8,10 @@
 #	keys: lib/verify.tcl.
 
 ::fivax::dialect::define linuxcnc {
+    default 0
     syntax gcode program {} percent 1 comment paren semicolon 1
     safety {G_cutcom 40 G_length 49 G_cycle 80} reset {} units {21 20}
-    length G43 machineZ G53 inverse 1
+    methods {} inverse 1
     tcp {} plane {} arcs {planes {17 18 19} helix 1}
     dwell P_s
     cycles {drill 81 drill_dwell 82 drill_deep 83 drill_break_chip 73 tap 84
@@ -20,10 +21,17 @@
         ABORT PY PYRUN PYRELOAD}
     ends {{2 30 99} {%}}
     cutcom {}
+    form {first {^%$} close {^%$} start {\mG2[01] G90\M} end {\mM(30|0?2)\M}
+        dwell {\mG0?4\M} free {}}
+    words {LOGOPEN PYRELOAD linuxcnc LinuxCNC}
 } {
     comment {\(([^)]*)\)|;(.*)$}
     skip {^\s*%\s*$}
     word {[A-Z][-+.0-9]+}
     tcpG {43.4}
-    syntax gcode
+    plane {}
+    methods {}
+    plain 1
+    end {} endName {}
+    callComp 0
 }

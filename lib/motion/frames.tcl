@@ -5,7 +5,7 @@
 #	Three output frames (spec dialects.md section 0): joint (machine X Y
 #	Z, the default), TCP (-tcp: the tool tip in the workpiece frame) and
 #	a work plane (an operation whose tool axis stays fixed and off the
-#	workpiece Z, on a control with G68.2, CYCLE800 or PLANE SPATIAL: the
+#	workpiece Z, on a control with a tilted work plane of its own: the
 #	tip in the plane's frame, the rotaries turned by the control). With
 #	the rotaries fixed, the map from the tip to X Y Z is a rigid motion in
 #	each, so an arc of the CL stays an arc of the blocks: it is written as

@@ -79,7 +79,7 @@ namespace eval ::fivax::motion {
         {-tcp {maybe bool} {} "0|1"
             "TCP mode: X Y Z are the tool tip, feeds the tip feed (G94), no linearisation: the control keeps the tip on the path (default: the machine's tcp)"}
         {-arcs {enum native points} native MODE
-            "CL arcs: native (G2/G3, Klartext C, where the control has them in the output frame's plane) or points"}
+            "CL arcs: native (G2/G3 or the control's own arc lines, where the control has them in the output frame's plane) or points"}
         {-workplane {enum auto on off} auto MODE
             "an operation with a fixed tool axis off Z: in a tilted work plane (auto: where the control has one; on: an error where it has none) or as five-axis blocks (off)"}
         {-output any {} DICT "what the output dialect writes (the output Writer's capabilities)"}
