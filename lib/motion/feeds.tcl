@@ -15,19 +15,20 @@ oo::define ::fivax::motion::Planner {
 
     # Returns the cutting moves through the point records pts (the last
     # one the CL point, the others inserted) from the last written point
-    # at tip feed (mm/min, clamped here), and adds their rotary travel to
+    # at tip feed (mm/min, clamped here) in feed mode (direct, inverse or
+    # dpm, see Tolerances), and adds their rotary travel to
     # the statistics (as Travel: a piece's rotaries turn once, so its
     # travel is that of its ends); a record flagged retract is reached
     # by a retract instead. The feed word of a move (mode and
     # rate, see flush): direct (rate the tip feed f) when no rotary moves
-    # or -feed direct; else inverse (rate f/d, d the tip path length in
+    # or mode direct; else inverse (rate f/d, d the tip path length in
     # the workpiece frame, at most inverse_time_max), or dpm (rate: the
     # combined length sqrt(dX^2+dY^2+dZ^2+dA^2+dB^2) (mm, deg) per block
     # time d/f, clamped to feed_min..feed_max).
     # Counts a dwell swing: a move that only turns the rotaries while the
     # tip stays put (at the singular direction, where the path leaves the
     # pole with another azimuth).
-    method FeedMoves {pts feed src} {
+    method FeedMoves {pts feed mode src} {
         # (the feed changes seldom: its clamp is kept)
         if {$feed != $S(clampIn)} {
             set S(clampIn) $feed
@@ -61,9 +62,9 @@ oo::define ::fivax::motion::Planner {
                     incr S(dwells)
                     set S(dwellTurn) [expr {$S(dwellTurn) + ($d1 + $d2)}]
                 }
-                if {$S(feed) eq "direct" || ($d1 <= 1e-9 && $d2 <= 1e-9)} {
+                if {$mode eq "direct" || ($d1 <= 1e-9 && $d2 <= 1e-9)} {
                     set word [list direct $f $f $d]
-                } elseif {$S(feed) eq "inverse"} {
+                } elseif {$mode eq "inverse"} {
                     if {$d * $S(itMax) > $f} {
                         set word [list inverse $f [expr {$f / $d}] $d]
                     } else {

@@ -120,10 +120,7 @@ oo::define ::fivax::motion::Planner {
         lappend moves [dict merge \
             [my Move arc $joints {X Y Z} $P1 $t [list direct $f $f $length] $src] \
             [dict create start [my Out $jl] center $c plane $plane dir $dir]]
-        set S(last) [list $joints $P1 $t $t [lindex $S(last) 4]]
-        set S(lastKind) feed
-        set S(lastSrc) $src
-        set S(lastHole) ""
+        my Reached [list $joints $P1 $t $t [lindex $S(last) 4]] feed $src
         incr S(moves)
         list 1 $moves
     }
@@ -229,7 +226,7 @@ oo::define ::fivax::motion::Planner {
     # written): the plane record (kind plane: matrix R, origin, seq the
     # sign of the tilt the control should take), the items with X Y Z in
     # the plane's frame, no rotary words, tip feeds and no linearisation
-    # (the rotaries stand still). The plane stays on for the operation's
+    # (the rotaries stand still, see Tolerances). The plane stays on for the operation's
     # next items on that axis (see Route, EndPlane). The tool stands at
     # the tool-change height before.
     method StartPlane {} {
@@ -243,11 +240,8 @@ oo::define ::fivax::motion::Planner {
         lassign [::fivax::motion::Preferred $S(ctx) $cands] q1
         set moves [list [dict create kind plane matrix $R origin {0.0 0.0 0.0} \
             seq [expr {$q1 < 0 ? -1 : 1}] P {} t {} src "" tag "" note ""]]
-        set S(planeSaved) [list $S(tol) $S(atol) $S(feed) $S(atolCheck)]
-        lassign {0.0 0.0 direct Inf} S(tol) S(atol) S(feed) S(atolCheck)
         set S(plane) [list $R {0.0 0.0 0.0} $t]
-        set S(last) ""
-        set S(lastHole) ""
+        my Unknown
         foreach item $items {
             lappend moves {*}[my {*}$item]
         }
@@ -267,8 +261,7 @@ oo::define ::fivax::motion::Planner {
         set S(wp) free
         set moves [my finish]
         set S(plane) ""
-        lassign $S(planeSaved) S(tol) S(atol) S(feed) S(atolCheck)
-        set S(last) ""
+        my Unknown
         lappend moves [dict create kind planeOff P {} t {} src $S(lastSrc) tag "" note ""]
     }
 

@@ -38,18 +38,50 @@ oo::define ::fivax::motion::Planner {
                 # (as abs(), see Continues)
                 if {($q2 > $a2 ? $q2 - $a2 : $a2 - $q2) > $S(swingRad)} {my CountSwing $ta $t}
                 # (FeedMoves adds the travel of its moves itself)
-                set moves [my FeedMoves [my Linearise $S(last) $b 0 $src] $feed $src]
+                lassign [my Tolerances] tol atol mode
+                set moves [my FeedMoves [my Linearise $S(last) $b $tol $atol 0 $src] $feed $mode $src]
             } else {
                 set moves [my Travel [my Retract $S(last) $b [my FeedClamp $feed] $src \
                     [::fivax::motion::LimitReason $S(ctx) $a1 $a2 $t]]]
             }
         }
+        my Reached $b $kind $src
+        incr S(moves) [llength $moves]
+        return $moves
+    }
+
+    # --- the path state: the last written point ----------------------------
+    # S(last): its point record ("" when the position is unknown: the next
+    # point is approached as a first one); S(lastKind): the kind of the CL
+    # item that reached it (rapid or feed); S(lastSrc): its FILE:LINE;
+    # S(lastHole): {q1 q2 z} when it is a canned-cycle hole's initial level
+    # (see NextHole), else "". Only Reached and Unknown set them.
+
+    # Records point record b as the last written point, reached by a CL
+    # item of kind (rapid|feed) from src; hole as S(lastHole).
+    method Reached {b kind src {hole ""}} {
         set S(last) $b
         set S(lastKind) $kind
         set S(lastSrc) $src
+        set S(lastHole) $hole
+    }
+
+    # Forgets the last written point's position (a tool change, the end of
+    # the program or of a work plane): the next point is approached as a
+    # first one. Its kind and src stay (the planeOff record names src).
+    method Unknown {} {
+        set S(last) ""
         set S(lastHole) ""
-        incr S(moves) [llength $moves]
-        return $moves
+    }
+
+    # Returns {tol atol mode} for the next cutting move: the tip
+    # tolerance (mm, 0: no linearisation), the axis tolerance (rad, Inf:
+    # not checked) and the feed mode (direct, inverse, dpm). In a work
+    # plane the rotaries stand still and the tip moves straight: no
+    # linearisation, tip feeds.
+    method Tolerances {} {
+        if {$S(plane) ne ""} {return {0.0 Inf direct}}
+        list $S(tol) $S(atolCheck) $S(feed)
     }
 
     # Returns a move record (see flush) of the given kind to joints

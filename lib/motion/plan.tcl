@@ -149,10 +149,11 @@ oo::class create ::fivax::motion::Planner {
         }
         lassign [lmap axis $S(axes) {dict get $axis name}] S(n1) S(n2)
         set S(frame) {}
-        array set S {last "" lastHole "" buf {} pathStart 1 points 0 moves 0 travel 0.0
+        array set S {buf {} pathStart 1 points 0 moves 0 travel 0.0
             inserted 0 retracts 0 holds 0 swings 0 unresolved 0 forced 0 dwells 0
-            dwellTurn 0.0 clamps 0 slowdown 0.0 lastKind "" lastSrc ""
-            held "" heldAxis "" plane "" planeSaved "" wp off clampIn -Inf clampOut ""}
+            dwellTurn 0.0 clamps 0 slowdown 0.0
+            held "" heldAxis "" plane "" wp off clampIn -Inf clampOut ""}
+        my Reached "" "" ""
         set S(entryFeed) [dict get $machine entry_feed]
         my setTool [dict get $machine tool_length]
     }
@@ -166,8 +167,7 @@ oo::class create ::fivax::motion::Planner {
         if {[llength $S(buf)]} {
             ::fivax::Fail MOTION STATE "setTool with [llength $S(buf)] CL points held: flush first"
         }
-        set S(last) ""
-        set S(lastHole) ""
+        my Unknown
         set model [::fivax::kin::model $S(machine) $len $S(table-offset)]
         set S(toolLength) $len
         set S(ctx) [::fivax::motion::Context $model $S(name) $S(axes) $S(cone) $S(angle-step)]
@@ -274,8 +274,7 @@ oo::class create ::fivax::motion::Planner {
             my Travel [list $move]
             lappend moves $move
         }
-        set S(last) ""
-        set S(lastHole) ""
+        my Unknown
         return $moves
     }
 
