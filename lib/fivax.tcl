@@ -9,7 +9,8 @@
 #	    def                .def files (the post's formats)
 #	    machine kin        machine files, kinematics
 #	    curve cutcom plane motion/  CL path geometry, 3D cutter compensation,
-#	                       work-plane frames, the planner
+#	                       work-plane frames, the move-record contract
+#	                       (motion/record.tcl), the planner
 #	    nc dialect output  blocks, the controllers (lib/dialect/), the output layer
 #	    verify dryrun      checking written blocks, the machine dry run
 #	    settings           the option table of a posting job
@@ -31,7 +32,8 @@ foreach ::fivax::File {
     num.tcl opts.tcl vec.tcl
     def.tcl
     machine.tcl kin.tcl
-    curve.tcl cutcom.tcl plane.tcl motion/plan.tcl motion/candidates.tcl motion/moves.tcl
+    curve.tcl cutcom.tcl plane.tcl
+    motion/record.tcl motion/plan.tcl motion/candidates.tcl motion/moves.tcl
     motion/linearise.tcl motion/feeds.tcl motion/holes.tcl motion/frames.tcl
     nc.tcl dialect.tcl output.tcl
     verify.tcl dryrun.tcl

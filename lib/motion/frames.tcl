@@ -72,9 +72,7 @@ oo::define ::fivax::motion::Planner {
     # written X Y Z, the arc makes extra turns, its ends lie
     # at radii more than 0.001 mm apart, the tool axis differs from the
     # last written point's or the arc does not start there. The rotaries
-    # stay those of the last point; the record (kind arc) adds start and
-    # center (output frame), plane (17, 18, 19) and dir (2 clockwise, 3
-    # counter-clockwise about the plane's normal) to a move's keys.
+    # stay those of the last point; the record: kind arc (see record.tcl).
     method NativeArc {P0 P1 C n sense turns t feed src} {
         if {$S(arcs) ne "native" || $turns != 0} {return {0 {}}}
         set planes [dict get $S(output) arcPlanes]
@@ -223,8 +221,7 @@ oo::define ::fivax::motion::Planner {
 
     # Returns the moves of the held operation in its work plane so far
     # (its tool axis fixed and off Z: called when something must be
-    # written): the plane record (kind plane: matrix R, origin, seq the
-    # sign of the tilt the control should take), the items with X Y Z in
+    # written): the plane record (see record.tcl), the items with X Y Z in
     # the plane's frame, no rotary words, tip feeds and no linearisation
     # (the rotaries stand still, see Tolerances). The plane stays on for the operation's
     # next items on that axis (see Route, EndPlane). The tool stands at
@@ -254,7 +251,8 @@ oo::define ::fivax::motion::Planner {
     }
 
     # Returns the moves that end the work plane: those held, a retract
-    # along the tool axis when the last one cut, and the planeOff record;
+    # along the tool axis when the last one cut, and the planeOff record
+    # (see record.tcl);
     # the position is unknown afterwards (the next point is approached as
     # a first one).
     method EndPlane {} {

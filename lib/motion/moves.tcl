@@ -84,7 +84,7 @@ oo::define ::fivax::motion::Planner {
         list $S(tol) $S(atolCheck) $S(feed)
     }
 
-    # Returns a move record (see flush) of the given kind to joints
+    # Returns a move record (see record.tcl) of the given kind to joints
     # {X Y Z q1 q2}, writing the axes in write (X Y Z, and last R for both
     # rotaries); feed is {mode feed rate tip} or {} for rapids.
     # X Y Z are those of the output frame (see Out); in a work plane no
