@@ -223,9 +223,9 @@ oo::define ::fivax::motion::Planner {
     # (its tool axis fixed and off Z: called when something must be
     # written): the plane record (see record.tcl), the items with X Y Z in
     # the plane's frame, no rotary words, tip feeds and no linearisation
-    # (the rotaries stand still, see Tolerances). The plane stays on for the operation's
-    # next items on that axis (see Route, EndPlane). The tool stands at
-    # the tool-change height before.
+    # (the rotaries stand still, see Tolerances). The plane stays on for
+    # the operation's next items on that axis (see Route, EndPlane). The
+    # tool stands at the tool-change height before.
     method StartPlane {} {
         set items $S(held)
         set S(held) ""
@@ -252,9 +252,8 @@ oo::define ::fivax::motion::Planner {
 
     # Returns the moves that end the work plane: those held, a retract
     # along the tool axis when the last one cut, and the planeOff record
-    # (see record.tcl);
-    # the position is unknown afterwards (the next point is approached as
-    # a first one).
+    # (see record.tcl); the position is unknown afterwards (the next point
+    # is approached as a first one).
     method EndPlane {} {
         set S(wp) free
         set moves [my finish]

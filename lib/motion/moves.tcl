@@ -2,8 +2,9 @@
 #	(motion) From chosen rotary values to move records: the first move of
 #	a program, rapid transfers to a new orientation, retract, reposition
 #	and re-engage where no cutting move can continue, and the statistics
-#	of what was written. Inside the planner a point record is the list
-#	{joints P t act branch ?retract?}: joints {X Y Z q1 q2} (mm, rad, chain
+#	of what was written; the path state (the last written point), which
+#	only Reached and Unknown set. Inside the planner a point record is
+#	the list {joints P t act branch ?retract?}: joints {X Y Z q1 q2} (mm, rad, chain
 #	order), the CL point P, t, the tool axis act the rotaries give, and
 #	the branch of the solution.
 
