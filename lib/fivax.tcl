@@ -1,14 +1,16 @@
 # fivax.tcl --
-#	Package loader for fivax, a five-axis postprocessor library in pure
-#	Tcl: sources the modules in pipeline order and holds the one error
-#	helper every module raises its errors with.
+#	Package loader for fivax, the post's package: what post/fivax.tcl
+#	needs inside NX, sourced in pipeline order, and the one error helper
+#	every module raises its errors with. The replay host's modules (the
+#	CL file reader and NX's MOM runtime) are the package fivax::host
+#	(host.tcl), which NX never loads.
 #
 #	    num opts vec       numbers, options, 3-vectors (used by all)
-#	    clsf               CL file reader             (replay's host side)
-#	    mom def            NX's MOM runtime, .def files (replay's host side)
+#	    def                .def files (the post's formats)
 #	    machine kin        machine files, kinematics
 #	    curve cutcom plane motion/  CL path geometry, 3D cutter compensation,
-#	                       work-plane frames, the planner
+#	                       work-plane frames, the move-record contract
+#	                       (motion/record.tcl), the planner
 #	    nc dialect output  blocks, the controllers (lib/dialect/), the output layer
 #	    verify dryrun      checking written blocks, the machine dry run
 #	    settings           the option table of a posting job
@@ -28,9 +30,10 @@ proc ::fivax::Fail {area detail msg} {
 
 foreach ::fivax::File {
     num.tcl opts.tcl vec.tcl
-    clsf.tcl mom.tcl def.tcl
+    def.tcl
     machine.tcl kin.tcl
-    curve.tcl cutcom.tcl plane.tcl motion/plan.tcl motion/candidates.tcl motion/moves.tcl
+    curve.tcl cutcom.tcl plane.tcl
+    motion/record.tcl motion/plan.tcl motion/candidates.tcl motion/moves.tcl
     motion/linearise.tcl motion/feeds.tcl motion/holes.tcl motion/frames.tcl
     nc.tcl dialect.tcl output.tcl
     verify.tcl dryrun.tcl

@@ -758,8 +758,8 @@ oo::class create ::fivax::output::Writer {
         return ""
     }
 
-    # Returns the blocks of the move record rec (see ::fivax::motion
-    # flush): G0 or G1 (see Motion), length compensation
+    # Returns the blocks of the move record rec (see lib/motion/record.tcl):
+    # G0 or G1 (see Motion), length compensation
     # with the first Z move after a tool change, TCP with the first X Y Z
     # move, G93/G94 and F for feed moves, and the axes in its write list
     # in machine units and degrees (a rotary that rolls over written in

@@ -228,15 +228,12 @@ fivax_handler MOM_start_of_program {
         -warn fivax_warn]
     set planOptions [fivax::settings pick $fivax(settings) motion]
     set caps [$fivax(out) capabilities]
-    if {![dict get $caps inverse] && [dict get $planOptions -feed] eq "inverse"} {
-        # no inverse time: F is the feed of all axes together,
-        # degrees counted as mm, which keeps the tip feed (in TCP mode F
-        # is the tip feed itself: nothing to note)
-        dict set planOptions -feed dpm
-        if {![dict get $caps tcp]} {
-            fivax_log "note: [dict get $caps controller] has no inverse-time feed:\
-                moves with rotary motion get the combined feed of all axes (-feed dpm)"
-        }
+    if {![dict get $caps inverse] && [dict get $planOptions -feed] eq "inverse"
+            && ![dict get $caps tcp]} {
+        # the planner writes -feed dpm for such a writer (in TCP mode F is
+        # the tip feed itself: nothing to note)
+        fivax_log "note: [dict get $caps controller] has no inverse-time feed:\
+            moves with rotary motion get the combined feed of all axes (-feed dpm)"
     }
     set fivax(plan) [fivax::motion create $machine -angle-step [$fivax(out) angleStep] \
         -length-step [lindex [$fivax(out) resolution] 0] -output [$fivax(out) capabilities] {*}$planOptions]

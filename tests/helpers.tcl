@@ -18,7 +18,7 @@ namespace import ::tcltest::*
 
 set ::fivaxRoot [file dirname [file dirname [file normalize [info script]]]]
 set ::auto_path [linsert $::auto_path 0 [file join $::fivaxRoot lib]]
-package require fivax 0.1
+package require fivax::host 0.1
 source [file join $::fivaxRoot tests kinref.tcl]
 source [file join $::fivaxRoot tools lib toolpath.tcl]
 source [file join $::fivaxRoot tools lib corpus.tcl]

@@ -38,7 +38,7 @@ package require Tcl 8.6
 
 set root [file dirname [file dirname [file normalize [info script]]]]
 set auto_path [linsert $auto_path 0 [file join $root lib]]
-package require fivax 0.1
+package require fivax::host 0.1
 
 namespace eval ::bench {
     variable options {

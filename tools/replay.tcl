@@ -77,7 +77,7 @@ namespace eval ::replay {
     }
 }
 set auto_path [linsert $auto_path 0 [file join $::replay::root lib]]
-package require fivax 0.1
+package require fivax::host 0.1
 source [file join $::replay::root tools lib nctool.tcl]
 
 # ::replay::Reset -- Clears the run's state: output target, sink, guard, progress.

@@ -25,7 +25,7 @@ package require Tcl 8.6
 
 set root [file dirname [file dirname [file normalize [info script]]]]
 set auto_path [linsert $auto_path 0 [file join $root lib]]
-package require fivax 0.1
+package require fivax::host 0.1
 foreach f {toolpath.tcl clpath.tcl svgplot.tcl nctool.tcl} {
     source [file join $root tools lib $f]
 }

@@ -72,9 +72,7 @@ oo::define ::fivax::motion::Planner {
     # written X Y Z, the arc makes extra turns, its ends lie
     # at radii more than 0.001 mm apart, the tool axis differs from the
     # last written point's or the arc does not start there. The rotaries
-    # stay those of the last point; the record (kind arc) adds start and
-    # center (output frame), plane (17, 18, 19) and dir (2 clockwise, 3
-    # counter-clockwise about the plane's normal) to a move's keys.
+    # stay those of the last point; the record: kind arc (see record.tcl).
     method NativeArc {P0 P1 C n sense turns t feed src} {
         if {$S(arcs) ne "native" || $turns != 0} {return {0 {}}}
         set planes [dict get $S(output) arcPlanes]
@@ -120,10 +118,7 @@ oo::define ::fivax::motion::Planner {
         lappend moves [dict merge \
             [my Move arc $joints {X Y Z} $P1 $t [list direct $f $f $length] $src] \
             [dict create start [my Out $jl] center $c plane $plane dir $dir]]
-        set S(last) [list $joints $P1 $t $t [lindex $S(last) 4]]
-        set S(lastKind) feed
-        set S(lastSrc) $src
-        set S(lastHole) ""
+        my Reached [list $joints $P1 $t $t [lindex $S(last) 4]] feed $src
         incr S(moves)
         list 1 $moves
     }
@@ -226,12 +221,11 @@ oo::define ::fivax::motion::Planner {
 
     # Returns the moves of the held operation in its work plane so far
     # (its tool axis fixed and off Z: called when something must be
-    # written): the plane record (kind plane: matrix R, origin, seq the
-    # sign of the tilt the control should take), the items with X Y Z in
+    # written): the plane record (see record.tcl), the items with X Y Z in
     # the plane's frame, no rotary words, tip feeds and no linearisation
-    # (the rotaries stand still). The plane stays on for the operation's
-    # next items on that axis (see Route, EndPlane). The tool stands at
-    # the tool-change height before.
+    # (the rotaries stand still, see Tolerances). The plane stays on for
+    # the operation's next items on that axis (see Route, EndPlane). The
+    # tool stands at the tool-change height before.
     method StartPlane {} {
         set items $S(held)
         set S(held) ""
@@ -243,11 +237,8 @@ oo::define ::fivax::motion::Planner {
         lassign [::fivax::motion::Preferred $S(ctx) $cands] q1
         set moves [list [dict create kind plane matrix $R origin {0.0 0.0 0.0} \
             seq [expr {$q1 < 0 ? -1 : 1}] P {} t {} src "" tag "" note ""]]
-        set S(planeSaved) [list $S(tol) $S(atol) $S(feed) $S(atolCheck)]
-        lassign {0.0 0.0 direct Inf} S(tol) S(atol) S(feed) S(atolCheck)
         set S(plane) [list $R {0.0 0.0 0.0} $t]
-        set S(last) ""
-        set S(lastHole) ""
+        my Unknown
         foreach item $items {
             lappend moves {*}[my {*}$item]
         }
@@ -260,15 +251,14 @@ oo::define ::fivax::motion::Planner {
     }
 
     # Returns the moves that end the work plane: those held, a retract
-    # along the tool axis when the last one cut, and the planeOff record;
-    # the position is unknown afterwards (the next point is approached as
-    # a first one).
+    # along the tool axis when the last one cut, and the planeOff record
+    # (see record.tcl); the position is unknown afterwards (the next point
+    # is approached as a first one).
     method EndPlane {} {
         set S(wp) free
         set moves [my finish]
         set S(plane) ""
-        lassign $S(planeSaved) S(tol) S(atol) S(feed) S(atolCheck)
-        set S(last) ""
+        my Unknown
         lappend moves [dict create kind planeOff P {} t {} src $S(lastSrc) tag "" note ""]
     }
 

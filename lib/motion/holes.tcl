@@ -119,10 +119,7 @@ oo::define ::fivax::motion::Planner {
             lappend new {*}[my Expand $event rec $t $step $delay $f $src]
         }
         my Travel $new
-        set S(last) $rec(initial)
-        set S(lastKind) rapid
-        set S(lastSrc) $src
-        set S(lastHole) [expr {$native ? [list $q1 $q2 $zi] : ""}]
+        my Reached $rec(initial) rapid $src [expr {$native ? [list $q1 $q2 $zi] : ""}]
         incr S(moves) [llength $new]
         concat $moves $new
     }

@@ -26,9 +26,10 @@
 oo::define ::fivax::motion::Planner {
     # Returns the point records after a up to and including b such that
     # the linear joint interpolation between consecutive ones, with X Y Z
-    # as written (Written), keeps the tip within -tol of their straight
-    # segment and the axis within -atol of the great circle of their
-    # actual axes (act), checked at the quarter points. An error e splits the move into about sqrt(e / tol)
+    # as written (Written), keeps the tip within tol (mm; 0: none
+    # inserted) of their straight segment and the axis within atol (rad;
+    # Inf: not checked) of the great circle of their actual axes (act),
+    # checked at the quarter points. An error e splits the move into about sqrt(e / tol)
     # pieces (the error of a smooth move shrinks with the square of its
     # length), each checked in turn, at most maxDepth levels deep and into
     # at most maxPieces pieces in all (a move of absurd length would
@@ -38,8 +39,8 @@ oo::define ::fivax::motion::Planner {
     # the flag retract. Refused with src: a move whose CL axes are
     # opposite (no great circle between them), and, before it is split, a
     # move ending outside the machine's travel.
-    method Linearise {a b depth src} {
-        if {$S(tol) <= 0} {return [list $b]}
+    method Linearise {a b tol atol depth src} {
+        if {$tol <= 0} {return [list $b]}
         lassign $a ja Pa ta acta la
         lassign $b jb Pb tb actb lb
         if {$depth == 0} {
@@ -66,11 +67,11 @@ oo::define ::fivax::motion::Planner {
             set wb [my Written $jb]
             lassign [::fivax::kin::interpolationBound $S(model) $wa $wb $Pa $Pb $acta $actb \
                 $S(xyzError) $S(actError)] bp ba
-            if {$bp <= $S(tol) && $ba <= $S(atolCheck)} {return [list $b]}
+            if {$bp <= $tol && $ba <= $atol} {return [list $b]}
             lassign [::fivax::kin::interpolationError $S(model) $wa $wb $Pa $Pb $acta $actb \
-                $S(tol) $S(atolCheck)] dp da
-            set e [expr {$dp / $S(tol)}]
-            if {$da / $S(atolCheck) > $e} {set e [expr {$da / $S(atolCheck)}]}
+                $tol $atol] dp da
+            set e [expr {$dp / $tol}]
+            if {$da / $atol > $e} {set e [expr {$da / $atol}]}
             if {$e <= 1.0} {return [list $b]}
             set n [expr {int(ceil(1.1 * sqrt($e)))}]
             set n [expr {$n < 2 ? 2 : $n > 16 ? 16 : $n}]
@@ -89,7 +90,7 @@ oo::define ::fivax::motion::Planner {
                 set prev $a
                 incr depth
                 foreach p $pts {
-                    lappend out {*}[my Linearise $prev $p $depth $src]
+                    lappend out {*}[my Linearise $prev $p $tol $atol $depth $src]
                     set prev $p
                 }
                 return $out

@@ -2,8 +2,9 @@
 #	(motion) From chosen rotary values to move records: the first move of
 #	a program, rapid transfers to a new orientation, retract, reposition
 #	and re-engage where no cutting move can continue, and the statistics
-#	of what was written. Inside the planner a point record is the list
-#	{joints P t act branch ?retract?}: joints {X Y Z q1 q2} (mm, rad, chain
+#	of what was written; the path state (the last written point), which
+#	only Reached and Unknown set. Inside the planner a point record is
+#	the list {joints P t act branch ?retract?}: joints {X Y Z q1 q2} (mm, rad, chain
 #	order), the CL point P, t, the tool axis act the rotaries give, and
 #	the branch of the solution.
 
@@ -38,21 +39,53 @@ oo::define ::fivax::motion::Planner {
                 # (as abs(), see Continues)
                 if {($q2 > $a2 ? $q2 - $a2 : $a2 - $q2) > $S(swingRad)} {my CountSwing $ta $t}
                 # (FeedMoves adds the travel of its moves itself)
-                set moves [my FeedMoves [my Linearise $S(last) $b 0 $src] $feed $src]
+                lassign [my Tolerances] tol atol mode
+                set moves [my FeedMoves [my Linearise $S(last) $b $tol $atol 0 $src] $feed $mode $src]
             } else {
                 set moves [my Travel [my Retract $S(last) $b [my FeedClamp $feed] $src \
                     [::fivax::motion::LimitReason $S(ctx) $a1 $a2 $t]]]
             }
         }
-        set S(last) $b
-        set S(lastKind) $kind
-        set S(lastSrc) $src
-        set S(lastHole) ""
+        my Reached $b $kind $src
         incr S(moves) [llength $moves]
         return $moves
     }
 
-    # Returns a move record (see flush) of the given kind to joints
+    # --- the path state: the last written point ----------------------------
+    # S(last): its point record ("" when the position is unknown: the next
+    # point is approached as a first one); S(lastKind): the kind of the CL
+    # item that reached it (rapid or feed); S(lastSrc): its FILE:LINE;
+    # S(lastHole): {q1 q2 z} when it is a canned-cycle hole's initial level
+    # (see NextHole), else "". Only Reached and Unknown set them.
+
+    # Records point record b as the last written point, reached by a CL
+    # item of kind (rapid|feed) from src; hole as S(lastHole).
+    method Reached {b kind src {hole ""}} {
+        set S(last) $b
+        set S(lastKind) $kind
+        set S(lastSrc) $src
+        set S(lastHole) $hole
+    }
+
+    # Forgets the last written point's position (a tool change, the end of
+    # the program or of a work plane): the next point is approached as a
+    # first one. Its kind and src stay (the planeOff record names src).
+    method Unknown {} {
+        set S(last) ""
+        set S(lastHole) ""
+    }
+
+    # Returns {tol atol mode} for the next cutting move: the tip
+    # tolerance (mm, 0: no linearisation), the axis tolerance (rad, Inf:
+    # not checked) and the feed mode (direct, inverse, dpm). In a work
+    # plane the rotaries stand still and the tip moves straight: no
+    # linearisation, tip feeds.
+    method Tolerances {} {
+        if {$S(plane) ne ""} {return {0.0 Inf direct}}
+        list $S(tol) $S(atolCheck) $S(feed)
+    }
+
+    # Returns a move record (see record.tcl) of the given kind to joints
     # {X Y Z q1 q2}, writing the axes in write (X Y Z, and last R for both
     # rotaries); feed is {mode feed rate tip} or {} for rapids.
     # X Y Z are those of the output frame (see Out); in a work plane no

@@ -1,8 +1,8 @@
 # plan.tcl --
 #	The motion planner (spec/kinematics.md sections 6 to 8): turns CL
 #	points (tool tip and axis in the workpiece frame) into neutral machine
-#	move records. One namespace, ::fivax::motion, over the files of
-#	lib/motion/:
+#	move records (their contract: record.tcl). One namespace,
+#	::fivax::motion, over the files of lib/motion/ (record.tcl aside):
 #	    plan.tcl        the Planner API, whole-path choice and windows
 #	    candidates.tcl  candidate rotary values: a pure function of the
 #	                    planning context (model, limits), tool axis and
@@ -12,6 +12,7 @@
 #	                    stays within tolerance
 #	    feeds.tcl       feed clamp and the feed of each cutting move
 #	    holes.tcl       drilling: canned cycle records or expanded moves
+#	    frames.tcl      the output frame: native arcs, tilted work planes
 #
 #	Choice. A cutting move may go from one candidate to the next when both
 #	lie on the same branch (or one is in the singular cone, where branches
@@ -117,6 +118,12 @@ oo::class create ::fivax::motion::Planner {
                 control [expr {$S(tcp) ? {in TCP mode } : {}}]has no tilted work plane:\
                 use -workplane auto (rotaries positioned, X Y Z transformed) or off"
         }
+        if {$S(feed) eq "inverse" && ![dict get $S(output) inverse]} {
+            # a writer without inverse time (Klartext): F is the feed of
+            # all axes together, degrees counted as mm, which keeps the
+            # tip feed
+            set S(feed) dpm
+        }
         if {$S(tcp)} {
             # the control interpolates the tip: no linearisation, tip feed
             set S(tol) 0.0
@@ -149,10 +156,11 @@ oo::class create ::fivax::motion::Planner {
         }
         lassign [lmap axis $S(axes) {dict get $axis name}] S(n1) S(n2)
         set S(frame) {}
-        array set S {last "" lastHole "" buf {} pathStart 1 points 0 moves 0 travel 0.0
+        array set S {buf {} pathStart 1 points 0 moves 0 travel 0.0
             inserted 0 retracts 0 holds 0 swings 0 unresolved 0 forced 0 dwells 0
-            dwellTurn 0.0 clamps 0 slowdown 0.0 lastKind "" lastSrc ""
-            held "" heldAxis "" plane "" planeSaved "" wp off clampIn -Inf clampOut ""}
+            dwellTurn 0.0 clamps 0 slowdown 0.0
+            held "" heldAxis "" plane "" wp off clampIn -Inf clampOut ""}
+        my Reached "" "" ""
         set S(entryFeed) [dict get $machine entry_feed]
         my setTool [dict get $machine tool_length]
     }
@@ -166,8 +174,7 @@ oo::class create ::fivax::motion::Planner {
         if {[llength $S(buf)]} {
             ::fivax::Fail MOTION STATE "setTool with [llength $S(buf)] CL points held: flush first"
         }
-        set S(last) ""
-        set S(lastHole) ""
+        my Unknown
         set model [::fivax::kin::model $S(machine) $len $S(table-offset)]
         set S(toolLength) $len
         set S(ctx) [::fivax::motion::Context $model $S(name) $S(axes) $S(cone) $S(angle-step)]
@@ -210,27 +217,9 @@ oo::class create ::fivax::motion::Planner {
         list {*}$pre {*}[my AddWork $kind $P [::fivax::vec::unit $t] $feed $src]
     }
 
-    # Returns every move record still held. A move record is a dict:
-    #   kind   rapid (positioning), feed (cutting), retract (away from
-    #          the part along the tool axis, at rapid), dwell (seconds: the
-    #          time) or cycle (a canned cycle's hole: axes at the bottom,
-    #          with event, r and initial (machine Z of the R plane and of
-    #          the initial level), step (peck) and delay (s), see hole)
-    #   axes   the joint values by axis name: X Y Z (mm) and the two
-    #          rotaries (radians, the planner's continuous values)
-    #   write  the axis names to write in this block
-    #   feed   programmed tip feed (mm/min, clamped; 0 for rapids)
-    #   mode   the feed word: direct (mm/min), inverse (1/min) or dpm
-    #   rate   the F value in that mode
-    #   tip    tool tip path length of the move (mm)
-    #   P t    the CL target in the workpiece frame (interpolated for
-    #          linearisation points, on the tool axis line for retract
-    #          and approach points; empty for positioning moves)
-    #   src    FILE:LINE of the CL record; tag "", inserted, reengage or
-    #          approach (the clearance point above an approach's first
-    #          point);
-    #   note   the reason of a retract
-    # A held work-plane segment (see frames.tcl) is posted: in its plane
+    # Returns every move record still held (every kind, its fields and
+    # their units: lib/motion/record.tcl, the move-record contract). A
+    # held work-plane segment (see frames.tcl) is posted: in its plane
     # when it cuts.
     method flush {} {
         if {$S(wp) eq "hold"} {
@@ -274,8 +263,7 @@ oo::class create ::fivax::motion::Planner {
             my Travel [list $move]
             lappend moves $move
         }
-        set S(last) ""
-        set S(lastHole) ""
+        my Unknown
         return $moves
     }
 
