@@ -2,7 +2,7 @@
 #	The move-record contract: what the planner (::fivax::motion, its
 #	add, arc, hole, flush, startPath, endPath, endPlane and finish
 #	methods) hands the output layer (::fivax::output's move method), in
-#	the way LinuxCNC's canonical interface defines what its interpreter
+#	the way a canonical machining interface defines what an interpreter
 #	hands the motion layer. This file is the one place that defines it:
 #	every record kind, its fields, their types and units, as data
 #	(Fields, Kinds), and check, which tests a record against it
@@ -23,7 +23,7 @@
 #	the planner has the tip path length, the joint travel and the
 #	machine's feed limits they need, and counts the clamped moves in its
 #	statistics; a writer without inverse time gets dpm: see the planner's
-#	-output). How the request is spelled (G93/G94, F, L .. FMAX) is the
+#	-output). How the request is spelled (G93/G94 and F, or a control's own feed words) is the
 #	writer's alone.
 
 namespace eval ::fivax::record {
