@@ -103,6 +103,17 @@ namespace eval ::fivax::output {
     #              none (LinuxCNC 2.9: its G41/G42 offset by the tool
     #              table's diameter, twice the radius on a tool centre
     #              path, and its interpreter refuses such a program)
+    #   cutcom3d   the control's own 3D tool-radius compensation (see
+    #              Cutcom3d; {} none), a dict: block (Klartext: the keyword
+    #              of its block in place of L; G-code: ""), code (the
+    #              G_cutcom code that switches it on, "" none; G40 off),
+    #              register (D: the tool's register written with it, ""
+    #              none), words (literal words after the code), normal
+    #              and axis (the prefixes of the surface normal's and the
+    #              tool axis's words, {} none), sign (1: the normal out of
+    #              the material, -1 into it), format (of those values),
+    #              rotaries (0: the rotary words are left out of its
+    #              blocks, the control sets them from the tool axis)
     # The angle convention of each work-plane form (see lib/plane.tcl).
     variable PlaneAngles {g68.2 zxz cycle800 xyz spatial spatial}
     # The G and M codes the layer writes, by the name Post Builder posts
@@ -286,6 +297,7 @@ oo::class create ::fivax::output::Writer {
         set S(cutcomCode) 40
         set S(cutcomRot) {}
         set S(cutcomNone) 0
+        set S(c3dOn) 0
         set S(klartext) [expr {[dict get $S(dialect) syntax] eq "klartext"}]
         set S(codes) [::fivax::output::CodesOf $S(klartext)]
         if {!$S(klartext)} {
@@ -392,10 +404,12 @@ oo::class create ::fivax::output::Writer {
     }
 
     # Returns what the dialect can write, for the planner: a dict of
-    # controller, inverse (G93 exists), plane (a work plane exists), arcPlanes (the
+    # controller, inverse (G93 exists), cutcom3d (the control has its own
+    # 3D tool-radius compensation: see Cutcom3d), plane (a work plane exists), arcPlanes (the
     # planes of native arcs), helix (1: helical arcs), tcp (TCP mode on).
     method capabilities {} {
         dict create controller [dict get $S(cfg) -controller] inverse [dict get $S(dialect) inverse] \
+            cutcom3d [expr {[llength [dict get $S(dialect) cutcom3d]] > 0}] \
             plane [expr {[dict get $S(dialect) plane] ne "" && ![dict get $S(cfg) -tcp]}] \
             arcPlanes [dict get $S(dialect) arcs planes] helix [dict get $S(dialect) arcs helix] \
             tcp [dict get $S(cfg) -tcp]
@@ -539,8 +553,9 @@ oo::class create ::fivax::output::Writer {
     method safeZ {} {
         if {$S(atSafe)} {return {}}
         set S(atSafe) 1
+        set lines [my Cutcom3dOff]
         set off [my TcpOff]
-        set lines [concat [my CycleOff] $off]
+        lappend lines {*}[my CycleOff] {*}$off
         set z [dict get $S(machine) tool_change_z]
         switch -exact -- [dict get $S(dialect) machineZ] {
             G53 {
@@ -814,6 +829,8 @@ oo::class create ::fivax::output::Writer {
             # block after a rapid states F again); the waiting TOOL CALL
             # first
             if {$S(pendingTool) ne ""} {lappend lines {*}[my ToolCall]}
+            if {[dict exists $rec normal]} {return [concat $lines [my Cutcom3dKlartext $rec]]}
+            set S(c3dOn) 0
             set words [::fivax::output::AxisWords {} $rec $S(xyzAddr) $S(rotAddr)]
             set radius [my KlartextRadius [my CutcomStep $rec $isFeed]]
             if {$isFeed} {
@@ -839,6 +856,12 @@ oo::class create ::fivax::output::Writer {
             lappend words {*}[my LengthWords]
         }
         lappend words {*}[my CutcomWords [my CutcomStep $rec $isFeed]]
+        set normal [expr {[dict exists $rec normal] || $S(c3dOn) ? [my Cutcom3d $rec] : {}}]
+        if {[llength $normal]} {
+            # (the axis words of the control's 3D compensation go after X Y Z)
+            set normal [lassign $normal on]
+            lappend words {*}$on
+        }
         if {$isFeed} {
             # (single-value lappends, as in AxisWords)
             lappend words G_feed
@@ -854,11 +877,87 @@ oo::class create ::fivax::output::Writer {
             }
         }
         set words [::fivax::output::AxisWords $words $rec $S(xyzAddr) $S(rotAddr)]
+        lappend words {*}$normal
         if {$isFeed} {
             lappend words $feed
             lappend words [dict get $rec rate]
         }
         lappend lines [$S(nc) block $words]
+    }
+
+    # --- the control's 3D tool-radius compensation (-cutcom3d control) ---
+    # A feed move record with a key normal (the unit surface normal at
+    # its contact, workpiece frame, out of the material: the post adds it)
+    # is written in the dialect's cutcom3d form (see the table): X Y Z the
+    # programmed tip, the normal (and the tool axis) as words, the control
+    # offsetting by its tool table's delta values. The first such block
+    # switches the compensation on, the next block without a normal off.
+
+    # Returns {onWords normalWords...} of move record rec (G-code): the
+    # words that switch the compensation on or off ({} none) and those of
+    # its normal; {} when neither.
+    method Cutcom3d {rec} {
+        set form [dict get $S(dialect) cutcom3d]
+        if {![dict exists $rec normal]} {
+            set S(c3dOn) 0
+            return [list [list G_cutcom 40]]
+        }
+        set on {}
+        if {!$S(c3dOn) && [dict get $form code] ne ""} {
+            set on [list G_cutcom [dict get $form code]]
+            if {[dict get $form register] ne ""} {
+                lappend on [dict get $form register] $S(register)
+            }
+            foreach word [dict get $form words] {lappend on "" $word}
+        }
+        set S(c3dOn) 1
+        list $on {*}[my Cutcom3dWords $rec]
+    }
+
+    # Returns the literal words (name "" value ...) of the normal and, when
+    # the dialect names them, the tool axis of move record rec.
+    method Cutcom3dWords {rec} {
+        set form [dict get $S(dialect) cutcom3d]
+        set words {}
+        foreach key {normal axis} vec [list [dict get $rec normal] [dict get $rec t]] \
+                sign [list [dict get $form sign] 1] {
+            if {![llength [dict get $form $key]]} continue
+            foreach prefix [dict get $form $key] v $vec {
+                # (no -0.0000000)
+                set v [expr {abs($v) < 5e-8 ? 0.0 : $sign * $v}]
+                lappend words "" $prefix[format [dict get $form format] $v]
+            }
+        }
+        return $words
+    }
+
+    # Returns the Klartext block of move record rec with a normal: the
+    # dialect's block (LN) with X Y Z, the normal and tool axis words, F.
+    method Cutcom3dKlartext {rec} {
+        set form [dict get $S(dialect) cutcom3d]
+        set S(c3dOn) 1
+        set S(atSafe) 0
+        $S(nc) force once {KX KY KZ}
+        if {![dict get $form rotaries]} {
+            dict set rec write {X Y Z}
+            # (the control turns the rotaries: the next L block writes them)
+            $S(nc) reset [lmap {- addr -} $S(rotAddr) {set addr}]
+        }
+        set words [::fivax::output::AxisWords {} $rec $S(xyzAddr) $S(rotAddr)]
+        lappend words {*}[my Cutcom3dWords $rec]
+        if {$S(feedMode) ne "feed"} {$S(nc) force once KF}
+        set S(feedMode) feed
+        lappend words KF [dict get $rec rate]
+        list [$S(nc) block $words 1 [list "[dict get $form block] " ""]]
+    }
+
+    # Returns the block that ends the control's 3D compensation (G-code
+    # G40) when it is on, else nothing.
+    method Cutcom3dOff {} {
+        if {!$S(c3dOn)} {return {}}
+        set S(c3dOn) 0
+        if {$S(klartext)} {return {}}
+        list [$S(nc) block {G_cutcom 40}]
     }
 
     # --- 2D cutter compensation (CUTCOM) ---------------------------------

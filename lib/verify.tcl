@@ -59,6 +59,15 @@ namespace eval ::fivax::verify {
     #            SUPA, TRAORI, TRAFOOF, ORIWKS, ORIAXES, CYCLE800, read by
     #            Sinumerik) or klartext (each line translated into ISO
     #            words by Klartext first)
+    #   cutcom3d the words of the control's 3D tool-radius compensation
+    #            (the path is the tip all the same), a dict of: drop (a
+    #            regexp of the words removed before reading: keywords and
+    #            normal), ijk (1: I J K in a linear block are its normal),
+    #            codes (its G codes besides G40 G41 G42),
+    #            block, normal, axis (Klartext: the keyword of its block,
+    #            read as L, with the prefixes of the normal's words,
+    #            skipped, and of the tool axis's, which then gives the axis
+    #            in TCP mode while the rotaries are the control's)
     # G codes whose meaning the checker follows; others are reported.
     variable KnownG {0 1 2 3 4 17 18 19 20 21 40 41 42 43 49 53 53.1 54 55 56 57 58 59 68.2 69
         70 71 73 76 80 81 82 83 84 85 86 87 88 89 90 93 94 98 99}
@@ -148,12 +157,15 @@ oo::class create ::fivax::verify::Checker {
         if {$name eq ""} {set name [dict get $machine controller]}
         set dialect [::fivax::dialect reader $name -controller]
         foreach key {comment skip word syntax tcpG} {set S($key) [dict get $dialect $key]}
+        set S(c3d) [dict merge {drop {} ijk 0 codes {} block {} normal {} axis {}} \
+            [dict get $dialect cutcom3d]]
         set S(lineRe) [::fivax::verify::LineRe $S(word)]
         # a line of plain words holds no comment and no keyword (Sinumerik's
         # are words of two letters or more): it needs no reading but split
         set S(plainText) [expr {$S(lineRe) ne "" && $S(syntax) ne "klartext"}]
         set S(pi) $::fivax::num::pi
         foreach key {CycleG KnownG KnownLetters} {set S($key) [set ::fivax::verify::$key]}
+        lappend S(KnownG) {*}[dict get $S(c3d) codes]
         set chain [dict get $machine chain]
         set names [lmap axis $chain {dict get $axis name}]
         set S(tcpCodes) [dict get $machine tcp_codes]
@@ -175,7 +187,7 @@ oo::class create ::fivax::verify::Checker {
             lassign [dict get $bounds $axis] S(${axis}lo) S(${axis}hi)
         }
         array set S {X {} Y {} Z {} q1 {} q2 {} motion {} mode direct F {} prev {}
-            cycle 0 return 98 initial {} bottom {} R {} tcp 0 frame {} plane 17 cc {}
+            cycle 0 return 98 initial {} bottom {} R {} tcp 0 frame {} plane 17 cc {} toolAxis {}
             checked 0 segments 0 maxPos 0.0 maxAng 0.0 maxMidPos 0.0 maxMidAng 0.0
             limitViolations 0 worst {} worstMid {} lastMotion {} rapidsAfterCut 0}
         my setTool [dict get $machine tool_length]
@@ -241,6 +253,7 @@ oo::class create ::fivax::verify::Checker {
             set skip [expr {[string first " " $line] < 0 && [regexp -- $S(skip) $line]}]
         } else {
             set text $line
+            if {[dict get $S(c3d) drop] ne ""} {regsub -all -- [dict get $S(c3d) drop] $text "" text}
             switch -exact -- $S(syntax) {
                 klartext {set text [my Klartext $text]}
                 sinumerik {set text [my Sinumerik $text]}
@@ -356,6 +369,8 @@ oo::class create ::fivax::verify::Checker {
                         set centreGiven 1
                         continue
                     }
+                    # (a 3D cutter compensation's normal: the path is the tip)
+                    if {[dict get $S(c3d) ijk]} continue
                 }
             }
             if {$letter in $S(rotaries)} {
@@ -479,6 +494,10 @@ oo::class create ::fivax::verify::Checker {
             regexp {^\d+\s+(.*)$} $body -> body
             if {[regexp {^L(\s.*)?$} $body -> rest]} {
                 set tokens [regexp -all -inline {\S+} $rest]
+            } elseif {[dict get $S(c3d) block] ne ""
+                    && [regexp {^(\S+)\s+(.*)$} $body -> keyword rest]
+                    && $keyword eq [dict get $S(c3d) block]} {
+                set tokens [my Cutcom3dTokens [regexp -all -inline {\S+} $rest]]
             }
         }
         if {[info exists tokens]} {
@@ -548,6 +567,28 @@ oo::class create ::fivax::verify::Checker {
         return $body
     }
 
+    # Returns the tokens of a Klartext 3D-compensation block (LN) but
+    # those of the normal and the tool axis; sets the tool axis, which
+    # stands for the rotaries (the control's: unknown) in TCP mode.
+    method Cutcom3dTokens {tokens} {
+        set axis {}
+        set rest {}
+        foreach tok $tokens {
+            regexp {^([A-Z]+)(.*)$} $tok -> prefix value
+            if {$prefix in [dict get $S(c3d) axis]} {
+                lappend axis [::fivax::verify::Number $value]
+            } elseif {$prefix ni [dict get $S(c3d) normal]} {
+                lappend rest $tok
+            }
+        }
+        if {[llength $axis] == 3 && "" ni $axis} {
+            set S(toolAxis) [::fivax::vec::unit $axis]
+            set S(q1) ""
+            set S(q2) ""
+        }
+        return $rest
+    }
+
     # Returns the Sinumerik line with its keywords read: SUPA as G53,
     # TRAORI / TRAFOOF switching TCP, ORIWKS / ORIAXES (the defaults the
     # reader assumes) dropped, CYCLE800(..) setting the work plane (mode
@@ -607,6 +648,11 @@ oo::class create ::fivax::verify::Checker {
                 [lmap row $R {lindex $row 2}]] plane]
         }
         if {"" in $joints} {
+            if {$S(tcp) && $S(toolAxis) ne "" && "" ni [lrange $joints 0 2]} {
+                # (after a Klartext LN block the control's rotaries hold
+                # the tool axis it gave)
+                return [list "" [list [lrange $joints 0 2] $S(toolAxis)] tcp]
+            }
             return [list "" "" [expr {$S(tcp) ? "tcp" : "joint"}]]
         }
         if {!$S(tcp)} {

@@ -4,6 +4,15 @@
 #	inverse time, TCP G43.4 H (in the first X Y Z block) cancelled by
 #	G49, work plane G68.2 + G53.1 (Euler Z-X'-Z''), G4 P in milliseconds,
 #	canned cycles G73 G76 G81..G89, end M30. Spec dialects.md section 1.
+#	3D cutter compensation (-cutcom3d control): FANUC Series 30i/300i/
+#	300is-MODEL A Descriptions (B-63942EN/02), 8 "Tool function / tool
+#	compensation function", "Three-dimensional cutter compensation":
+#	G41 X Y Z I J K D starts it (the offset space is that of the axis
+#	addresses of the start block), the blocks after it carry X Y Z I J K,
+#	G40 cancels; the tool centre is offset by the D value along (I, J, K)
+#	(the surface normal, out of the material), written with 7 decimals.
+#	With G43.4 the D register holds the delta to the programmed cutter.
+#	(G41.2/G42.2, the 5-axis tool-side offset, takes no normal: not used.)
 #	Writer keys: lib/output.tcl (Dialects); reader keys: lib/verify.tcl.
 
 ::fivax::dialect::define fanuc {
@@ -18,10 +27,13 @@
     active {}
     ends {{2 30 99} {%}}
     cutcom GD
+    cutcom3d {block {} code 41 register D words {} normal {I J K} axis {}
+        sign 1 format %.7f rotaries 1}
 } {
     comment {\(([^)]*)\)}
     skip {^\s*(%|O\d+\s*(\(.*\))?\s*)$}
     word {[A-Z][-+.0-9]+}
     tcpG {43.4}
     syntax gcode
+    cutcom3d {ijk 1}
 }

@@ -20,10 +20,12 @@
         ABORT PY PYRUN PYRELOAD}
     ends {{2 30 99} {%}}
     cutcom {}
+    cutcom3d {}
 } {
     comment {\(([^)]*)\)|;(.*)$}
     skip {^\s*%\s*$}
     word {[A-Z][-+.0-9]+}
     tcpG {43.4}
     syntax gcode
+    cutcom3d {}
 }
