@@ -252,7 +252,6 @@ fivax_handler MOM_start_of_program {
     set fivax(contactPrev) {}
     set fivax(opContacts) 0
     set fivax(c3d) {}
-    set fivax(c3dLast) {}
     set fivax(msysAxes) {}
     fivax_cutcom3d_control_check $caps
     set fivax(cutcomQueue) {}
@@ -860,44 +859,19 @@ proc fivax_cutcom3d_normal {kind} {
 
 # fivax_cutcom3d_attach --
 #	Returns the move records moves with the key normal added to each
-#	cutting move of a CL point with contact data: its normal, and for the
-#	points the planner inserted before it the normal interpolated (unit
-#	sum, by the tip's distance along the move) from the last one written.
+#	cutting move to a CL point with contact data: its normal. (In TCP
+#	mode, which -cutcom3d control needs, the planner inserts no points
+#	between CL points: the control keeps the tip on the line itself.)
 proc fivax_cutcom3d_attach {moves} {
     global fivax
-    set out {}
-    set i 0
-    foreach move $moves {
+    lmap move $moves {
         set src [dict get $move src]
-        if {[dict get $move kind] ne "feed" || ![dict exists $fivax(c3d) $src]} {
-            set fivax(c3dLast) {}
-            lappend out $move
-            incr i
-            continue
+        if {[dict get $move kind] eq "feed" && [dict exists $fivax(c3d) $src]} {
+            dict set move normal [dict get $fivax(c3d) $src]
+            if {[dict get $move tag] eq ""} {dict unset fivax(c3d) $src}
         }
-        set n [dict get $fivax(c3d) $src]
-        set P [dict get $move P]
-        if {[dict get $move tag] eq "inserted" && [llength $fivax(c3dLast)]} {
-            # the CL point's own move: the next one of src not inserted
-            foreach later [lrange $moves $i+1 end] {
-                if {[dict get $later src] eq $src && [dict get $later tag] ne "inserted"} {
-                    lassign $fivax(c3dLast) P0 n0
-                    set a [fivax::vec::dist $P0 $P]
-                    set b [fivax::vec::dist $P [dict get $later P]]
-                    set s [expr {$a + $b > 0 ? $a / ($a + $b) : 1.0}]
-                    set n [fivax::vec::unit [fivax::vec::add [fivax::vec::scale [expr {1.0 - $s}] $n0] \
-                        [fivax::vec::scale $s $n]]]
-                    break
-                }
-            }
-        } elseif {[dict get $move tag] ne "inserted"} {
-            dict unset fivax(c3d) $src
-        }
-        set fivax(c3dLast) [list $P $n]
-        lappend out [dict set move normal $n]
-        incr i
+        set move
     }
-    return $out
 }
 
 # fivax_cutters --

@@ -3,7 +3,9 @@
 #	number, G4 P in seconds, no G68.2 (3+2 as rotary positioning and
 #	machine coordinates) and no TCP G code (the machine file's tcp_codes
 #	M codes of a switchable-kinematics configuration), comment words the
-#	interpreter acts on (MSG, DEBUG, ...) defused, end M30 and %. Spec
+#	interpreter acts on (MSG, DEBUG, ...) defused, end M30 and %. No 2D
+#	cutter compensation on tool centre paths (cutcom) and no 3D tool-radius
+#	compensation (cutcom3d; -cutcom3d control is an error). Spec
 #	dialects.md section 4. Writer keys: lib/output.tcl (Dialects); reader
 #	keys: lib/verify.tcl.
 
