@@ -806,6 +806,10 @@ oo::class create ::fivax::output::Writer {
     # [0, 360)); arcs, work planes, holes and dwells by their kind.
     method move {rec} {
         set kind [dict get $rec kind]
+        if {$S(c3dOn) && $kind in {cycle dwell arc plane planeOff}} {
+            # (the control's 3D compensation ends before a block of another kind)
+            return [concat [my Cutcom3dOff] [my move $rec]]
+        }
         switch -- $kind {
             cycle {return [my Cycle $rec]}
             dwell {return [my dwell [dict get $rec seconds]]}
