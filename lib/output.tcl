@@ -897,9 +897,10 @@ oo::class create ::fivax::output::Writer {
     # offsetting by its tool table's delta values. The first such block
     # switches the compensation on, the next block without a normal off.
 
-    # Returns {onWords normalWords...} of move record rec (G-code): the
-    # words that switch the compensation on or off ({} none) and those of
-    # its normal; {} when neither.
+    # Returns {switch normalWord...} for move record rec (G-code; called
+    # with a normal or while the compensation is on): switch the words
+    # that turn it on (the first block with a normal) or off (G40, the
+    # first without), else {}, then the words of its normal.
     method Cutcom3d {rec} {
         set form [dict get $S(dialect) cutcom3d]
         if {![dict exists $rec normal]} {
