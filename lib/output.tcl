@@ -107,6 +107,17 @@ namespace eval ::fivax::output {
     #              plane, TCP; "" none)
     #   words      the words distinctive of the controller: they occur in
     #              its file only (tests/dialects.test checks)
+    #   cutcom3d   the control's own 3D tool-radius compensation (see
+    #              Cutcom3d; {} none), a dict: block (the keyword of its
+    #              block in place of a straight move's; G-code: ""), code (the
+    #              G_cutcom code that switches it on, "" none; G40 off),
+    #              register (D: the tool's register written with it, ""
+    #              none), words (literal words after the code), normal
+    #              and axis (the prefixes of the surface normal's and the
+    #              tool axis's words, {} none), sign (1: the normal out of
+    #              the material, -1 into it), format (of those values),
+    #              rotaries (0: the rotary words are left out of its
+    #              blocks, the control sets them from the tool axis)
     # The G and M codes the layer writes, by the name Post Builder posts
     # keep them under (the variable mom_sys_<name>, which the templates of
     # a .def read; see sysVars): gcode those only the G-code syntax writes,
@@ -292,6 +303,7 @@ oo::class create ::fivax::output::Writer {
         set S(cutcomCode) 40
         set S(cutcomRot) {}
         set S(cutcomNone) 0
+        set S(c3dOn) 0
         set S(klartext) [expr {[dict get $S(dialect) syntax] eq "klartext"}]
         set S(codes) [::fivax::output::CodesOf $S(klartext)]
         if {!$S(klartext)} {
@@ -398,10 +410,12 @@ oo::class create ::fivax::output::Writer {
     }
 
     # Returns what the dialect can write, for the planner: a dict of
-    # controller, inverse (G93 exists), plane (a work plane exists), arcPlanes (the
+    # controller, inverse (G93 exists), cutcom3d (the control has its own
+    # 3D tool-radius compensation: see Cutcom3d), plane (a work plane exists), arcPlanes (the
     # planes of native arcs), helix (1: helical arcs), tcp (TCP mode on).
     method capabilities {} {
         dict create controller [dict get $S(cfg) -controller] inverse [dict get $S(dialect) inverse] \
+            cutcom3d [expr {[llength [dict get $S(dialect) cutcom3d]] > 0}] \
             plane [expr {[dict get $S(dialect) plane] ne "" && ![dict get $S(cfg) -tcp]}] \
             arcPlanes [dict get $S(dialect) arcs planes] helix [dict get $S(dialect) arcs helix] \
             tcp [dict get $S(cfg) -tcp]
@@ -538,8 +552,9 @@ oo::class create ::fivax::output::Writer {
     method safeZ {} {
         if {$S(atSafe)} {return {}}
         set S(atSafe) 1
+        set lines [my Cutcom3dOff]
         set off [my TcpOff]
-        set lines [concat [my CycleOff] $off]
+        lappend lines {*}[my CycleOff] {*}$off
         lappend lines {*}[my MachineZ [dict get $S(machine) tool_change_z] $off]
         $S(nc) reset [dict get $S(xyzAddr) Z]
         set S(length) $S(register)
@@ -766,6 +781,10 @@ oo::class create ::fivax::output::Writer {
     # [0, 360)); arcs, work planes, holes and dwells by their kind.
     method move {rec} {
         set kind [dict get $rec kind]
+        if {$S(c3dOn) && $kind in {cycle dwell arc plane planeOff}} {
+            # (the control's 3D compensation ends before a block of another kind)
+            return [concat [my Cutcom3dOff] [my move $rec]]
+        }
         switch -- $kind {
             cycle {return [my Cycle $rec]}
             dwell {return [my dwell [dict get $rec seconds]]}
@@ -804,6 +823,12 @@ oo::class create ::fivax::output::Writer {
             lappend words {*}[my LengthWords]
         }
         lappend words {*}[my CutcomWords [my CutcomStep $rec $isFeed]]
+        set normal [expr {[dict exists $rec normal] || $S(c3dOn) ? [my Cutcom3d $rec] : {}}]
+        if {[llength $normal]} {
+            # (the axis words of the control's 3D compensation go after X Y Z)
+            set normal [lassign $normal on]
+            lappend words {*}$on
+        }
         if {$isFeed} {
             # (single-value lappends, as in AxisWords)
             lappend words G_feed
@@ -819,11 +844,69 @@ oo::class create ::fivax::output::Writer {
             }
         }
         set words [::fivax::output::AxisWords $words $rec $S(xyzAddr) $S(rotAddr)]
+        lappend words {*}$normal
         if {$isFeed} {
             lappend words $feed
             lappend words [dict get $rec rate]
         }
         list [$S(nc) block $words]
+    }
+
+    # --- the control's 3D tool-radius compensation (-cutcom3d control) ---
+    # A feed move record with a key normal (the unit surface normal at
+    # its contact, workpiece frame, out of the material: the post adds it)
+    # is written in the dialect's cutcom3d form (see the table): X Y Z the
+    # programmed tip, the normal (and the tool axis) as words, the control
+    # offsetting by its tool table's delta values. The first such block
+    # switches the compensation on, the next block without a normal off.
+
+    # Returns {switch normalWord...} for move record rec (G-code; called
+    # with a normal or while the compensation is on): switch the words
+    # that turn it on (the first block with a normal) or off (G40, the
+    # first without), else {}, then the words of its normal.
+    method Cutcom3d {rec} {
+        set form [dict get $S(dialect) cutcom3d]
+        if {![dict exists $rec normal]} {
+            set S(c3dOn) 0
+            return [list [list G_cutcom 40]]
+        }
+        set on {}
+        if {!$S(c3dOn) && [dict get $form code] ne ""} {
+            set on [list G_cutcom [dict get $form code]]
+            if {[dict get $form register] ne ""} {
+                lappend on [dict get $form register] $S(register)
+            }
+            foreach word [dict get $form words] {lappend on "" $word}
+        }
+        set S(c3dOn) 1
+        list $on {*}[my Cutcom3dWords $rec]
+    }
+
+    # Returns the literal words (name "" value ...) of the normal and, when
+    # the dialect names them, the tool axis of move record rec.
+    method Cutcom3dWords {rec} {
+        set form [dict get $S(dialect) cutcom3d]
+        set words {}
+        foreach key {normal axis} vec [list [dict get $rec normal] [dict get $rec t]] \
+                sign [list [dict get $form sign] 1] {
+            if {![llength [dict get $form $key]]} continue
+            foreach prefix [dict get $form $key] v $vec {
+                # (no -0.0000000)
+                set v [expr {abs($v) < 5e-8 ? 0.0 : $sign * $v}]
+                lappend words "" $prefix[format [dict get $form format] $v]
+            }
+        }
+        return $words
+    }
+
+    # Returns the block that ends the control's 3D compensation (G-code
+    # G40) when it is on, else nothing.
+    method Cutcom3dOff {} {
+        if {!$S(c3dOn)} {return {}}
+        set S(c3dOn) 0
+        # (a form without a code ends with the next block of another kind)
+        if {[dict get $S(dialect) cutcom3d code] eq ""} {return {}}
+        list [$S(nc) block {G_cutcom 40}]
     }
 
     # --- 2D cutter compensation (CUTCOM) ---------------------------------

@@ -18,8 +18,8 @@ namespace eval ::fivax::settings {
             "file for warnings, retracts and errors (default: <output>.log beside the NC file when the host names it)"}
         {-dryrun {enum on off} on WHEN
             "machine dry run of the written program at its end (lib/dryrun.tcl): any event ends posting with an error"}
-        {-cutcom3d {enum off post} off MODE
-            "3D tool-radius compensation: off, or post (every cutting move with contact data (CONTACT records) moved for the cutter -tool-diameter, -tool-corner-radius)"}
+        {-cutcom3d {enum off post control} off MODE
+            "3D tool-radius compensation: off, post (every cutting move with contact data (CONTACT records) moved for the cutter -tool-diameter, -tool-corner-radius) or control (the control's own, where the controller has one: the surface normal written with each such move, TCP mode)"}
         {-tool-diameter {maybe real gt 0} {} MM "diameter of the cutter in the spindle, for -cutcom3d post"}
         {-tool-corner-radius {maybe real min 0} {} MM
             "corner radius of the cutter in the spindle, for -cutcom3d post (default: the CL cutter's, at most half the diameter)"}

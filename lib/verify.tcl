@@ -69,6 +69,15 @@ namespace eval ::fivax::verify {
     #   endName  what end finds, in words ("" none)
     #   callComp 1: a tool call switches length compensation on (the dry
     #            run's lengthcomp)
+    #   cutcom3d the words of the control's 3D tool-radius compensation
+    #            (the path is the tip all the same), a dict of: drop (a
+    #            regexp of the words removed before reading: keywords and
+    #            normal), ijk (1: I J K in a linear block are its normal),
+    #            codes (its G codes besides G40 G41 G42),
+    #            block, normal, axis (Klartext: the keyword of its block,
+    #            read as L, with the prefixes of the normal's words,
+    #            skipped, and of the tool axis's, which then gives the axis
+    #            in TCP mode while the rotaries are the control's)
     # G codes whose meaning the checker follows (with the reader's plane
     # codes); others are reported.
     variable KnownG {0 1 2 3 4 17 18 19 20 21 40 41 42 43 49 53 54 55 56 57 58 59 69
@@ -162,6 +171,8 @@ oo::class create ::fivax::verify::Checker {
         if {[dict get $dialect methods] ne ""} {
             oo::objdefine [self] mixin [dict get $dialect methods]
         }
+        set S(c3d) [dict merge {drop {} ijk 0 codes {} block {} normal {} axis {}} \
+            [dict get $dialect cutcom3d]]
         set S(lineRe) [::fivax::verify::LineRe $S(word)]
         # a line of plain words holds no comment and no keyword: it needs
         # no reading but split
@@ -170,6 +181,7 @@ oo::class create ::fivax::verify::Checker {
         foreach key {CycleG KnownG KnownLetters} {set S($key) [set ::fivax::verify::$key]}
         lassign [dict get $dialect plane] S(planeG) - S(planeAngles)
         lappend S(KnownG) {*}[lrange [dict get $dialect plane] 0 1]
+        lappend S(KnownG) {*}[dict get $S(c3d) codes]
         set chain [dict get $machine chain]
         set names [lmap axis $chain {dict get $axis name}]
         set S(tcpCodes) [dict get $machine tcp_codes]
@@ -191,7 +203,7 @@ oo::class create ::fivax::verify::Checker {
             lassign [dict get $bounds $axis] S(${axis}lo) S(${axis}hi)
         }
         array set S {X {} Y {} Z {} q1 {} q2 {} motion {} mode direct F {} prev {}
-            cycle 0 return 98 initial {} bottom {} R {} tcp 0 frame {} plane 17 cc {}
+            cycle 0 return 98 initial {} bottom {} R {} tcp 0 frame {} plane 17 cc {} toolAxis {}
             checked 0 segments 0 maxPos 0.0 maxAng 0.0 maxMidPos 0.0 maxMidAng 0.0
             limitViolations 0 worst {} worstMid {} lastMotion {} rapidsAfterCut 0}
         my setTool [dict get $machine tool_length]
@@ -317,6 +329,8 @@ oo::class create ::fivax::verify::Checker {
                         set centreGiven 1
                         continue
                     }
+                    # (a 3D cutter compensation's normal: the path is the tip)
+                    if {[dict get $S(c3d) ijk]} continue
                 }
             }
             if {$letter in $S(rotaries)} {
@@ -378,7 +392,9 @@ oo::class create ::fivax::verify::Checker {
             set skip [expr {[string first " " $line] < 0 && [regexp -- $S(skip) $line]}]
             return [list $skip [split $line " "] {} {}]
         }
-        set text [my Translate $line]
+        set text $line
+        if {[dict get $S(c3d) drop] ne ""} {regsub -all -- [dict get $S(c3d) drop] $text "" text}
+        set text [my Translate $text]
         if {[string first ( $text] >= 0 || [string first ";" $text] >= 0} {
             foreach {- a b} [regexp -all -inline -- $S(comment) $text] {
                 lappend comments [expr {$a ne "" ? $a : $b}]
@@ -555,6 +571,11 @@ oo::class create ::fivax::verify::Checker {
                 [lmap row $R {lindex $row 2}]] plane]
         }
         if {"" in $joints} {
+            if {$S(tcp) && $S(toolAxis) ne "" && "" ni [lrange $joints 0 2]} {
+                # (after a Klartext LN block the control's rotaries hold
+                # the tool axis it gave)
+                return [list "" [list [lrange $joints 0 2] $S(toolAxis)] tcp]
+            }
             return [list "" "" [expr {$S(tcp) ? "tcp" : "joint"}]]
         }
         if {!$S(tcp)} {

@@ -248,6 +248,9 @@ fivax_handler MOM_start_of_program {
     set fivax(cutcomWarned) 0
     set fivax(contactPrev) {}
     set fivax(opContacts) 0
+    set fivax(c3d) {}
+    set fivax(msysAxes) {}
+    fivax_cutcom3d_control_check $caps
     set fivax(cutcomQueue) {}
     set fivax(first) {}
     fivax_out [$fivax(out) start "[fivax_program_name] - [dict get $machine name]" \
@@ -267,6 +270,7 @@ fivax_handler MOM_start_of_path {
 fivax_handler MOM_msys {
     global fivax mom_msys_origin mom_msys_matrix
     set m [lmap i {0 1 2 3 4 5 6 7 8} {set mom_msys_matrix($i)}]
+    set fivax(msysAxes) [list [lrange $m 0 2] [lrange $m 3 5]]
     $fivax(plan) setFrame [list $mom_msys_origin(0) $mom_msys_origin(1) $mom_msys_origin(2)] \
         [lrange $m 0 2] [lrange $m 3 5]
 }
@@ -705,10 +709,11 @@ proc fivax_arc {} {
     global mom_arc_direction mom_arc_times mom_tool_axis mom_feed_rate
     set feed [expr {[info exists mom_feed_rate] ? $mom_feed_rate : 0.0}]
     if {!($feed > 0)} {fivax_feed_zero $feed arc}
-    if {[dict get $fivax(settings) -cutcom3d] eq "post"} {
+    set mode [dict get $fivax(settings) -cutcom3d]
+    if {$mode ne "off"} {
         global mom_contact_status
         if {[info exists mom_contact_status] && $mom_contact_status eq "ON"} {
-            fivax::Fail CUTCOM ARC "-cutcom3d post: an arc with contact data cannot be\
+            fivax::Fail CUTCOM ARC "-cutcom3d $mode: an arc with contact data cannot be\
                 compensated: output the path as points (no CIRCLE records)"
         }
         set fivax(contactPrev) {}
@@ -763,7 +768,10 @@ proc fivax_motion {kind {point ""}} {
     if {$kind eq "feed"} {fivax_cutting "cutting move"}
     if {$point eq ""} {
         set point [list $mom_mcs_goto(0) $mom_mcs_goto(1) $mom_mcs_goto(2)]
-        if {[dict get $fivax(settings) -cutcom3d] eq "post"} {set point [fivax_cutcom3d $kind $point]}
+        switch -- [dict get $fivax(settings) -cutcom3d] {
+            post {set point [fivax_cutcom3d $kind $point]}
+            control {fivax_cutcom3d_normal $kind}
+        }
     }
     fivax_emit [$fivax(plan) add $kind $point \
         [list $mom_tool_axis(0) $mom_tool_axis(1) $mom_tool_axis(2)] \
@@ -805,6 +813,64 @@ proc fivax_cutcom3d {kind point} {
     set fivax(contactPrev) [list $C $n]
     incr fivax(opContacts)
     fivax::cutcom compensate $point [lmap i $xyz {set mom_tool_axis($i)}] $C $n $programmed $actual
+}
+
+# 3D tool-radius compensation by the control (-cutcom3d control): the
+# CL point goes to the planner as programmed (the tip of the CL's cutter),
+# and each cutting move record the planner makes of it is written with the
+# unit surface normal of its contact (output layer: the dialect's
+# cutcom3d form); the control offsets by its tool table's delta values.
+
+# fivax_cutcom3d_control_check --
+#	Errors when -cutcom3d control is set and the output layer (its
+#	capabilities caps) has no 3D compensation of the control's own, or
+#	writes no TCP mode (the normal is given in the workpiece frame).
+proc fivax_cutcom3d_control_check {caps} {
+    global fivax
+    if {[dict get $fivax(settings) -cutcom3d] ne "control"} return
+    if {![dict get $caps cutcom3d]} {
+        fivax::Fail OPTION VALUE "fivax_settings: -cutcom3d control: [dict get $caps controller]\
+            has no 3D tool-radius compensation of its own: use -cutcom3d post -tool-diameter MM\
+            (the post moves the points for the cutter in the spindle)"
+    }
+    if {![dict get $caps tcp]} {
+        fivax::Fail OPTION VALUE "fivax_settings: -cutcom3d control needs TCP mode (-tcp 1):\
+            the control's 3D compensation takes the tip and the surface normal in the\
+            workpiece frame"
+    }
+}
+
+# fivax_cutcom3d_normal --
+#	Keeps the unit surface normal of the GOTO being read (a cutting move
+#	of kind feed with contact data), in the workpiece frame, for its move
+#	records (see fivax_cutcom3d_attach), by its FILE:LINE.
+proc fivax_cutcom3d_normal {kind} {
+    global fivax mom_contact_status mom_contact_normal
+    if {$kind ne "feed" || ![info exists mom_contact_status] || $mom_contact_status ne "ON"} return
+    set n [lmap i {0 1 2} {set mom_contact_normal($i)}]
+    if {[dict get $fivax(settings) -msys] && [llength $fivax(msysAxes)]} {
+        lassign $fivax(msysAxes) x y
+        set n [fivax::motion::FrameApply $x $y [fivax::vec::cross $x $y] $n]
+    }
+    incr fivax(opContacts)
+    dict set fivax(c3d) [fivax_where] $n
+}
+
+# fivax_cutcom3d_attach --
+#	Returns the move records moves with the key normal added to each
+#	cutting move to a CL point with contact data: its normal. (In TCP
+#	mode, which -cutcom3d control needs, the planner inserts no points
+#	between CL points: the control keeps the tip on the line itself.)
+proc fivax_cutcom3d_attach {moves} {
+    global fivax
+    lmap move $moves {
+        set src [dict get $move src]
+        if {[dict get $move kind] eq "feed" && [dict exists $fivax(c3d) $src]} {
+            dict set move normal [dict get $fivax(c3d) $src]
+            if {[dict get $move tag] eq ""} {dict unset fivax(c3d) $src}
+        }
+        set move
+    }
 }
 
 # fivax_cutters --
@@ -920,6 +986,7 @@ fivax_handler MOM_cycle_off {
 #	record.
 proc fivax_emit {moves} {
     global fivax
+    if {[llength $fivax(c3d)]} {set moves [fivax_cutcom3d_attach $moves]}
     foreach move $moves {
         if {[llength $fivax(cutcomQueue)]} {fivax_cutcom_due [dict get $move src]}
         if {[dict get $move kind] eq "retract"} {
@@ -948,8 +1015,9 @@ proc fivax_emit {moves} {
 fivax_handler MOM_end_of_path {
     global fivax
     fivax_settle
-    if {[dict get $fivax(settings) -cutcom3d] eq "post" && !$fivax(opContacts)} {
-        fivax_warn "-cutcom3d post: the operation has no contact data (CONTACT records):\
+    set mode [dict get $fivax(settings) -cutcom3d]
+    if {$mode ne "off" && !$fivax(opContacts)} {
+        fivax_warn "-cutcom3d $mode: the operation has no contact data (CONTACT records):\
             its moves are posted for the CL's cutter, not compensated"
     }
     fivax_emit [$fivax(plan) endPath]

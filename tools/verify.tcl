@@ -45,7 +45,7 @@ namespace eval ::verifytool {
         {-tool-length {maybe real} {} MM "tool length of every tool the CL (-cl) gives none (a CL TLDATA wins, as in the post; default: each tool's from -tools, else the program's FIVAX TOOL comments, else the machine's tool_length)"}
         {-table-offset {maybe vec3} {} "X Y Z" "workpiece-frame position of the table reference point"}
         {-arc-tol {real gt 0} 0.002 MM "chord tolerance of CL arcs (the post's -arc-tol)"}
-        {-cutcom3d {enum off post} off MODE "the program was posted with -cutcom3d post: the CL's cutting points with contact data (-cl) are moved for the cutter -tool-diameter, -tool-corner-radius as the post moved them"}
+        {-cutcom3d {enum off post control} off MODE "the program was posted with -cutcom3d post: the CL's cutting points with contact data (-cl) are moved for the cutter -tool-diameter, -tool-corner-radius as the post moved them; control: the control compensates, the CL's points are the path (as off)"}
         {-tool-diameter {maybe real gt 0} {} MM "diameter of the cutter of -cutcom3d post"}
         {-tool-corner-radius {maybe real min 0} {} MM "corner radius of the cutter of -cutcom3d post (default: the CL cutter's)"}
         {-window {int min 1} 32 N "CL segments searched ahead of the last match"}

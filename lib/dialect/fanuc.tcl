@@ -4,6 +4,15 @@
 #	inverse time, TCP G43.4 H (in the first X Y Z block) cancelled by
 #	G49, work plane G68.2 + G53.1 (Euler Z-X'-Z''), G4 P in milliseconds,
 #	canned cycles G73 G76 G81..G89, end M30. Spec dialects.md section 1.
+#	3D cutter compensation (-cutcom3d control): FANUC Series 30i/300i/
+#	300is-MODEL A Descriptions (B-63942EN/02), 8 "Tool function / tool
+#	compensation function", "Three-dimensional cutter compensation":
+#	G41 X Y Z I J K D starts it (the offset space is that of the axis
+#	addresses of the start block), the blocks after it carry X Y Z I J K,
+#	G40 cancels; the tool centre is offset by the D value along (I, J, K)
+#	(the surface normal, out of the material), written with 7 decimals.
+#	With G43.4 the D register holds the delta to the programmed cutter.
+#	(G41.2/G42.2, the 5-axis tool-side offset, takes no normal: not used.)
 #	Writer keys: lib/output.tcl (Dialects); reader keys: lib/verify.tcl.
 
 namespace eval ::fivax::dialect::fanuc {}
@@ -43,6 +52,8 @@ oo::class create ::fivax::dialect::fanuc::Writer {
     form {first {^%$} close {^%$} start {\mG2[01] G90\M} end {\mM(30|0?2)\M}
         dwell {\mG0?4\M} free {G68\.2|G43\.4}}
     words {G43.4 G68.2 G53.1 fanuc Fanuc}
+    cutcom3d {block {} code 41 register D words {} normal {I J K} axis {}
+        sign 1 format %.7f rotaries 1}
 } {
     comment {\(([^)]*)\)}
     skip {^\s*(%|O\d+\s*(\(.*\))?\s*)$}
@@ -53,4 +64,5 @@ oo::class create ::fivax::dialect::fanuc::Writer {
     plain 1
     end {} endName {}
     callComp 0
+    cutcom3d {ijk 1}
 }

@@ -26,6 +26,12 @@
 #	  - M30 ends the program; % opens and closes it; O number of 5 digits.
 #	  - G41/G42 D n, G40: 2D cutter compensation (cutcom GD); on
 #	    fivax's tool centre paths the D offset holds the wear only.
+#	  - G141 3D+ Cutter Compensation (Group 07), -cutcom3d control: G141
+#	    X Y Z I J K F D starts it, then G01 X Y Z I J K F blocks; I J K "the
+#	    normal direction, relative to the center of the tool, to the
+#	    contact point", a unit vector: written as the surface normal
+#	    reversed (fivax's normal points out of the material, towards the
+#	    tool centre), 7 decimals; D selects the wear offset; G40 cancels.
 #	Writer keys: lib/output.tcl (Dialects); reader keys: lib/verify.tcl.
 
 ::fivax::dialect::define haas {
@@ -44,6 +50,8 @@
     form {first {^%$} close {^%$} start {\mG2[01] G90\M} end {\mM(30|0?2)\M}
         dwell {\mG0?4\M} free {\mG234\M}}
     words {G234 haas Haas}
+    cutcom3d {block {} code 141 register D words {} normal {I J K} axis {}
+        sign -1 format %.7f rotaries 1}
 } {
     comment {\(([^)]*)\)}
     skip {^\s*(%|O\d+\s*(\(.*\))?\s*)$}
@@ -54,4 +62,5 @@
     plain 1
     end {} endName {}
     callComp 0
+    cutcom3d {ijk 1 codes 141}
 }

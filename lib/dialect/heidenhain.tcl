@@ -6,6 +6,17 @@
 #	cycles expanded into moves, end M30 and END PGM. Spec dialects.md
 #	section 3. Writer keys: lib/output.tcl (Dialects); reader keys:
 #	lib/verify.tcl.
+#	3D tool compensation (-cutcom3d control): Heidenhain TNC 640 User's
+#	Manual Conversational Programming (34059x-01), 11.6 "Three-Dimensional
+#	Tool Compensation (Software Option 2)" (iTNC 530: 12.6; TNC 620
+#	81760x: 12.6, option 9), "Block format with surface-normal vectors
+#	and tool orientation": LN X Y Z NX NY NZ TX TY TZ F, with M128 or
+#	FUNCTION TCPM active; NX NY NZ the components of the surface-normal
+#	vector, TX TY TZ of the normalised tool orientation, written as the
+#	manual's examples with 7 decimals (coarse normals make the control
+#	slow down). The rotary positions are the control's (from TX TY TZ):
+#	an LN block writes none, the next L block all of them. The control
+#	offsets by the tool table's delta values DL, DR, DR2 along the normal.
 
 namespace eval ::fivax::dialect::heidenhain {}
 
@@ -107,6 +118,8 @@ oo::class create ::fivax::dialect::heidenhain::Writer {
     # rapid states F again); the waiting TOOL CALL first.
     method Motion {rec isFeed} {
         set lines [my ToolCall]
+        if {[dict exists $rec normal]} {return [concat $lines [my Cutcom3dBlock $rec]]}
+        set S(c3dOn) 0
         set words [::fivax::output::AxisWords {} $rec $S(xyzAddr) $S(rotAddr)]
         set radius [my Radius [my CutcomStep $rec $isFeed]]
         if {$isFeed} {
@@ -119,6 +132,28 @@ oo::class create ::fivax::dialect::heidenhain::Writer {
         }
         lappend lines [$S(nc) block $words 1 [list "L " " $tail"]]
     }
+
+    # Returns the 3D compensation's block of move record rec with a
+    # normal: LN with X Y Z, the normal and tool axis words (see the
+    # writer table's cutcom3d), F.
+    method Cutcom3dBlock {rec} {
+        set form [dict get $S(dialect) cutcom3d]
+        set S(c3dOn) 1
+        set S(atSafe) 0
+        $S(nc) force once {KX KY KZ}
+        if {![dict get $form rotaries]} {
+            dict set rec write {X Y Z}
+            # (the control turns the rotaries: the next L block writes them)
+            $S(nc) reset [lmap {- addr -} $S(rotAddr) {set addr}]
+        }
+        set words [::fivax::output::AxisWords {} $rec $S(xyzAddr) $S(rotAddr)]
+        lappend words {*}[my Cutcom3dWords $rec]
+        if {$S(feedMode) ne "feed"} {$S(nc) force once KF}
+        set S(feedMode) feed
+        lappend words KF [dict get $rec rate]
+        list [$S(nc) block $words 1 [list "[dict get $form block] " ""]]
+    }
+
 
     # Returns the lines of arc record rec: CC (the centre) and C (the end,
     # DR- clockwise / DR+, the radius word, F).
@@ -180,6 +215,8 @@ oo::class create ::fivax::dialect::heidenhain::Writer {
         end {\mM(30|0?2)\M} dwell {CYCL DEF 9\.} free {PLANE SPATIAL|TCPM}}
     words {{TOOL CALL} {CYCL DEF} {PLANE SPATIAL} {PLANE RESET} TCPM {BEGIN PGM} {END PGM}
         FMAX M91 heidenhain Heidenhain}
+    cutcom3d {block LN code {} register {} words {} normal {NX NY NZ} axis {TX TY TZ}
+        sign 1 format %+.7f rotaries 0}
 } {
     comment {;(.*)$}
     skip {^\s*$}
@@ -190,16 +227,41 @@ oo::class create ::fivax::dialect::heidenhain::Writer {
     plain 0
     end {^\s*(\d+\s+)?END PGM\M} endName {END PGM}
     callComp 1
+    cutcom3d {block LN normal {NX NY NZ} axis {TX TY TZ}}
 }
 
 # The reader's forms of this control (mixed into ::fivax::verify::Checker).
 oo::class create ::fivax::dialect::heidenhain::Reader {
     variable S
 
+    # Returns the tokens of a 3D-compensation block (LN, read as L) but
+    # those of the normal and the tool axis; sets the tool axis, which
+    # stands for the rotaries (the control's: unknown) in TCP mode.
+    method Cutcom3dTokens {tokens} {
+        set axis {}
+        set rest {}
+        foreach tok $tokens {
+            regexp {^([A-Z]+)(.*)$} $tok -> prefix value
+            if {$prefix in [dict get $S(c3d) axis]} {
+                lappend axis [::fivax::verify::Number $value]
+            } elseif {$prefix ni [dict get $S(c3d) normal]} {
+                lappend rest $tok
+            }
+        }
+        if {[llength $axis] == 3 && "" ni $axis} {
+            set S(toolAxis) [::fivax::vec::unit $axis]
+            set S(q1) ""
+            set S(q2) ""
+        }
+        return $rest
+    }
+
     # Returns the Klartext line as the ISO words the reader follows: L
     # (FMAX: G0, else G1, M91: G53, R0 left out), C with DR-/DR+ (G2/G3,
     # the centre from the last CC as I J), TOOL CALL (T M6, S), FUNCTION
-    # TCPM (the reader's tcpG) and FUNCTION RESET TCPM (G49), STOP (M0), BEGIN PGM's
+    # TCPM (the reader's tcpG) and FUNCTION RESET TCPM (G49), STOP (M0), LN
+    # (the 3D compensation's block: an L whose normal and tool axis are
+    # read by Cutcom3dTokens), BEGIN PGM's
     # units (G21 MM, G20 INCH); CC, PLANE SPATIAL and PLANE RESET set the
     # state and give no block; END PGM and cycle 9 are no blocks (read
     # tells the program's end); a comment "; text" stays one.
@@ -213,6 +275,10 @@ oo::class create ::fivax::dialect::heidenhain::Reader {
             regexp {^\d+\s+(.*)$} $body -> body
             if {[regexp {^L(\s.*)?$} $body -> rest]} {
                 set tokens [regexp -all -inline {\S+} $rest]
+            } elseif {[dict get $S(c3d) block] ne ""
+                    && [regexp {^(\S+)\s+(.*)$} $body -> keyword rest]
+                    && $keyword eq [dict get $S(c3d) block]} {
+                set tokens [my Cutcom3dTokens [regexp -all -inline {\S+} $rest]]
             }
         }
         if {[info exists tokens]} {

@@ -3,7 +3,9 @@
 #	number, G4 P in seconds, no work plane (3+2 as rotary positioning and
 #	machine coordinates) and no TCP G code (the machine file's tcp_codes
 #	M codes of a switchable-kinematics configuration), comment words the
-#	interpreter acts on (MSG, DEBUG, ...) defused, end M30 and %. Spec
+#	interpreter acts on (MSG, DEBUG, ...) defused, end M30 and %. No 2D
+#	cutter compensation on tool centre paths (cutcom) and no 3D tool-radius
+#	compensation (cutcom3d; -cutcom3d control is an error). Spec
 #	dialects.md section 4. Writer keys: lib/output.tcl (Dialects); reader
 #	keys: lib/verify.tcl.
 
@@ -24,6 +26,7 @@
     form {first {^%$} close {^%$} start {\mG2[01] G90\M} end {\mM(30|0?2)\M}
         dwell {\mG0?4\M} free {}}
     words {LOGOPEN PYRELOAD linuxcnc LinuxCNC}
+    cutcom3d {}
 } {
     comment {\(([^)]*)\)|;(.*)$}
     skip {^\s*%\s*$}
@@ -34,4 +37,5 @@
     plain 1
     end {} endName {}
     callComp 0
+    cutcom3d {}
 }

@@ -4,6 +4,17 @@
 #	inverse time, TCP TRAORI ORIWKS ORIAXES / TRAFOOF, work plane
 #	CYCLE800 (mode 57), G4 F in seconds, drill cycles expanded into moves,
 #	end M30. Spec dialects.md section 2.
+#	3D tool radius compensation (-cutcom3d control): SINUMERIK 840D
+#	Manual "5-axis machining", reference section 7.1 "Tool radius
+#	compensation" (and the Programming Manual Job Planning, "3D tool
+#	radius compensation"): CUT3DF face milling, 5-axis with variable tool
+#	orientation (the orientation from the rotaries under TRAORI, which
+#	fivax writes in TCP mode), switched on by G41 with CUT3DF and off by
+#	G40; the surface normal at each block's end as A5= B5= C5= (the start
+#	vector A4= B4= C4= left out: the control takes the previous block's
+#	end vector), 7 decimals. CUT3DC (circumferential milling, with ISD)
+#	is not written: the CL's contact data describe the face contact. The
+#	tool's D1 holds the delta to the programmed cutter.
 #	Writer keys: lib/output.tcl (Dialects); reader keys: lib/verify.tcl.
 
 namespace eval ::fivax::dialect::sinumerik {}
@@ -64,6 +75,8 @@ oo::class create ::fivax::dialect::sinumerik::Writer {
     form {first {} close {} start {\mG7[01] G90\M} end {\mM(30|0?2)\M}
         dwell {\mG0?4\M} free {CYCLE800|TRAORI}}
     words {TRAORI TRAFOOF ORIWKS ORIAXES CYCLE800 SUPA sinumerik Sinumerik}
+    cutcom3d {block {} code 41 register {} words CUT3DF normal {A5= B5= C5=} axis {}
+        sign 1 format %.7f rotaries 1}
 } {
     comment {;(.*)$}
     skip {^\s*$}
@@ -74,6 +87,7 @@ oo::class create ::fivax::dialect::sinumerik::Writer {
     plain 1
     end {} endName {}
     callComp 0
+    cutcom3d {drop {\m(?:CUT3DF|CUT3DC|[ABC][45]=[-+.0-9]+)(?=\s|$)}}
 }
 
 # The reader's forms of this control (mixed into ::fivax::verify::Checker).
