@@ -60,7 +60,10 @@ namespace eval ::fivax::record {
         matrix  {matrix - "the work plane's frame R, three rows: its columns are the plane's X' Y' Z' (unit vectors, workpiece frame)"}
         origin  {point mm "the work plane's origin (workpiece frame)"}
         seq     {enum:-1|1 - "the sign of the tilt the control should take"}
+        normal  {axis? - "the unit surface normal at the move's contact (workpiece frame, out of the material): added by the post to a cutting move for the control's own 3D tool-radius compensation (-cutcom3d control)"}
     }
+    # The fields a kind may have besides its own (Kinds): kind {name ...}.
+    variable Optional {feed normal}
     # The record kinds: kind {fields meaning}. The fields of a move (the
     # planner's Move) come first in every kind that moves an axis.
     variable Kinds {
@@ -98,11 +101,13 @@ proc ::fivax::record::fields {kind} {
 }
 
 # ::fivax::record::check --
-#	Returns rec when it keeps the contract; else raises {FIVAX RECORD
+#	Returns rec when it keeps the contract (its kind's fields, and no
+#	other but those Optional allows it); else raises {FIVAX RECORD
 #	INVALID} with "src: what is wrong" (every problem, "; " between).
 proc ::fivax::record::check {rec} {
     variable Kinds
     variable Fields
+    variable Optional
     if {[catch {dict size $rec}]} {
         ::fivax::Fail RECORD INVALID "a move record is no dict: $rec"
     }
@@ -120,8 +125,14 @@ proc ::fivax::record::check {rec} {
             lappend problems "field $name: $why"
         }
     }
+    set may [expr {[dict exists $Optional $kind] ? [dict get $Optional $kind] : {}}]
     foreach name [dict keys $rec] {
-        if {$name ni $want} {lappend problems "field $name is not one of a $kind record"}
+        if {$name in $want} continue
+        if {$name ni $may} {
+            lappend problems "field $name is not one of a $kind record"
+        } elseif {[set why [Problem [lindex [dict get $Fields $name] 0] [dict get $rec $name] $rec]] ne ""} {
+            lappend problems "field $name: $why"
+        }
     }
     if {[llength $problems]} {
         ::fivax::Fail RECORD INVALID "$where: $kind record: [join $problems {; }]"
