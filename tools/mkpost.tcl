@@ -4,8 +4,8 @@
 #	every wrapper's template_post.dat line names the one post/fivax.def.
 #	Prints the template_post.dat line of every post in post/:
 #	post/fivax.tcl itself (FIVAX: the machine of the settings), then the
-#	others by name, the machines' and any made by hand, such as
-#	hh-paper-fig5 (README.md lists them; a test checks it). A post with a
+#	others by name, the machines' and any made by hand (README.md lists
+#	them; a test checks it). A post with a
 #	.def of its own (post/<name>.def, nctool postDef) names that one.
 #
 #	tclsh tools/mkpost.tcl ?-check? ?-def MACHINE?

@@ -15,7 +15,7 @@ namespace eval ::fivax::nctool {
 # ::fivax::nctool::postDef --
 #	Returns the .def of the post whose .tcl file is tcl: its own copy
 #	<name>.def beside it when there is one (a format of its own, as
-#	hh-paper-fig5's), else the one shared post/fivax.def beside it (what
+#	a shop's copy), else the one shared post/fivax.def beside it (what
 #	every wrapper tools/mkpost.tcl writes names in its template_post.dat
 #	line).
 proc ::fivax::nctool::postDef {tcl} {
