@@ -940,11 +940,8 @@ oo::class create ::fivax::mom::Runtime {
         set S(feed) $value
         set S(perRev) $perRev
         my PerMinute
-        if {$perRev} {
-            my Globals [list mom_feed_rate_per_rev $value mom_feed_rate $S(fpm)]
-        } else {
-            my Globals [list mom_feed_rate $value]
-        }
+        my Globals [list mom_feed_rate $S(fpm)]
+        if {$perRev} {my Globals [list mom_feed_rate_per_rev $value]}
     }
 
     # PerMinute --
@@ -1143,8 +1140,23 @@ oo::class create ::fivax::mom::Runtime {
         set mode [my PostVar [expr {$helix ? "mom_kin_helical_arc_output_mode"
             : "mom_kin_arc_output_mode"}] FULL_CIRCLE]
         my FeedGlobals $rec
-        if {($helix && ![my Has MOM_helix_move])
-                || [my ArcBeyondPost $circle $start $end $center $axis $sense $times]} {
+        if {$mode ne "LINEAR" && !($helix && ![my Has MOM_helix_move])} {
+            set max [dict get {FULL_CIRCLE 360.0 QUADRANT 90.0 END_POINT Inf} $mode]
+            set pieces {}
+            set total 0.0
+            set from $start
+            foreach piece [my Curve $circle ARC CIRCLE arcSplit $start $end $center $axis $sense \
+                    $times [expr {$max * $pi / 180.0}]] {
+                lassign $piece p sweep
+                set length [my ArcLength $from $p $center $axis $sweep]
+                lappend pieces [list $p $sweep $length]
+                set total [expr {$total + $length}]
+                set from $p
+            }
+            if {[my ArcBeyondPost [::fivax::curve::radius $start $center $axis] $total]} {
+                set mode LINEAR
+            }
+        } else {
             set mode LINEAR
         }
         if {$mode eq "LINEAR"} {
@@ -1156,9 +1168,6 @@ oo::class create ::fivax::mom::Runtime {
             }
             return
         }
-        set max [dict get {FULL_CIRCLE 360.0 QUADRANT 90.0 END_POINT Inf} $mode]
-        set pieces [my Curve $circle ARC CIRCLE arcSplit $start $end $center $axis $sense $times \
-            [expr {$max * $pi / 180.0}]]
         lassign [::fivax::mom::ArcFrame $axis $sense] nxAxis nxSense plane
         set pairs [list mom_arc_radius [dict get $circle radius] \
             mom_arc_direction [expr {$nxSense < 0 ? "CLW" : "CCLW"}]]
@@ -1175,12 +1184,11 @@ oo::class create ::fivax::mom::Runtime {
         set event [expr {$helix ? "helix_move" : "circular_move"}]
         set from $start
         foreach piece $pieces {
-            lassign $piece p sweep
+            lassign $piece p sweep length
             # a piece turns at most once: no extra turns
             my Globals [concat $pairs [list mom_arc_times 0 \
                 mom_arc_angle [::fivax::num::deg $sweep] \
                 mom_helix_pitch [my Pitch $from $p $axis $sweep]]]
-            set length [my ArcLength $from $p $center $axis $sweep]
             set from $p
             my SetPosition $p $S(axis)
             set S(moveLength) $length
@@ -1189,14 +1197,14 @@ oo::class create ::fivax::mom::Runtime {
     }
 
     # ArcBeyondPost --
-    #	Returns 1 when the arc is shorter than the post's
-    #	mom_kin_min_arc_length or its radius lies outside
-    #	mom_kin_min_arc_radius .. mom_kin_max_arc_radius (each where the
-    #	post sets a number): NX then writes it as linear gotos (NX's event
-    #	dictionary: "Any arc with a radius larger than the maximum will
-    #	output as linear gotos"; the shortest arc "before the post defaults
-    #	to linear interpolation").
-    method ArcBeyondPost {circle start end center axis sense times} {
+    #	Returns 1 when an arc of radius r and length (mm, output unit) is
+    #	shorter than the post's mom_kin_min_arc_length or its radius lies
+    #	outside mom_kin_min_arc_radius .. mom_kin_max_arc_radius (each
+    #	where the post sets a number): NX then writes it as linear gotos
+    #	(NX's event dictionary: "Any arc with a radius larger than the
+    #	maximum will output as linear gotos"; the shortest arc "before the
+    #	post defaults to linear interpolation").
+    method ArcBeyondPost {r length} {
         set limits {}
         foreach {name default} {mom_kin_min_arc_radius 0 mom_kin_max_arc_radius Inf
                 mom_kin_min_arc_length 0} {
@@ -1204,18 +1212,7 @@ oo::class create ::fivax::mom::Runtime {
             lappend limits [expr {[string is double -strict $value] ? $value : $default}]
         }
         lassign $limits minR maxR minL
-        set r [::fivax::curve::radius $start $center $axis]
-        if {$r < $minR || $r > $maxR} {return 1}
-        if {$minL <= 0} {return 0}
-        set length 0.0
-        set from $start
-        foreach piece [my Curve $circle ARC CIRCLE arcSplit $start $end $center $axis $sense \
-                $times Inf] {
-            lassign $piece p sweep
-            set length [expr {$length + [my ArcLength $from $p $center $axis $sweep]}]
-            set from $p
-        }
-        expr {$length < $minL}
+        expr {$r < $minR || $r > $maxR || $length < $minL}
     }
 
     # ArcRadius --
