@@ -249,7 +249,6 @@ fivax_handler MOM_start_of_program {
     set fivax(contactPrev) {}
     set fivax(opContacts) 0
     set fivax(c3d) {}
-    set fivax(msysAxes) {}
     fivax_cutcom3d_control_check $caps
     set fivax(cutcomQueue) {}
     set fivax(first) {}
@@ -270,7 +269,6 @@ fivax_handler MOM_start_of_path {
 fivax_handler MOM_msys {
     global fivax mom_msys_origin mom_msys_matrix
     set m [lmap i {0 1 2 3 4 5 6 7 8} {set mom_msys_matrix($i)}]
-    set fivax(msysAxes) [list [lrange $m 0 2] [lrange $m 3 5]]
     $fivax(plan) setFrame [list $mom_msys_origin(0) $mom_msys_origin(1) $mom_msys_origin(2)] \
         [lrange $m 0 2] [lrange $m 3 5]
 }
@@ -847,13 +845,9 @@ proc fivax_cutcom3d_control_check {caps} {
 proc fivax_cutcom3d_normal {kind} {
     global fivax mom_contact_status mom_contact_normal
     if {$kind ne "feed" || ![info exists mom_contact_status] || $mom_contact_status ne "ON"} return
-    set n [lmap i {0 1 2} {set mom_contact_normal($i)}]
-    if {[dict get $fivax(settings) -msys] && [llength $fivax(msysAxes)]} {
-        lassign $fivax(msysAxes) x y
-        set n [fivax::motion::FrameApply $x $y [fivax::vec::cross $x $y] $n]
-    }
     incr fivax(opContacts)
-    dict set fivax(c3d) [fivax_where] $n
+    dict set fivax(c3d) [fivax_where] \
+        [$fivax(plan) workVector [lmap i {0 1 2} {set mom_contact_normal($i)}]]
 }
 
 # fivax_cutcom3d_attach --

@@ -267,13 +267,21 @@ oo::class create ::fivax::motion::Planner {
         return $moves
     }
 
+    # Returns the direction v (a CL vector, e.g. a contact's surface
+    # normal) in the workpiece frame: mapped through the MSYS frame when
+    # enabled.
+    method workVector {v} {
+        if {$S(frame) eq ""} {return $v}
+        lassign $S(frame) o x y z
+        ::fivax::motion::FrameApply $x $y $z $v
+    }
+
     # Returns {P t} mapped through the MSYS frame when enabled (S(frame)
     # is set only then).
     method ToWork {P t} {
         if {$S(frame) eq ""} {return [list $P $t]}
         lassign $S(frame) o x y z
-        set Pw [::fivax::vec::add $o [::fivax::motion::FrameApply $x $y $z $P]]
-        list $Pw [::fivax::motion::FrameApply $x $y $z $t]
+        list [::fivax::vec::add $o [::fivax::motion::FrameApply $x $y $z $P]] [my workVector $t]
     }
 
     # Returns 1 when the next point may take any configuration: nothing
